@@ -1,0 +1,137 @@
+# Standalone build of VTK::ApertureLighting against an installed VTK 9.1: the library, its Python
+# package `aperturelighting`, the CMake package `ApertureLighting` and the tests.
+
+include(GNUInstallDirs)
+
+set(_aperture_vtk_components
+  CommonCore
+  CommonDataModel
+  CommonExecutionModel
+  CommonMath
+  RenderingCore
+  RenderingOpenGL2
+  opengl)
+set(_aperture_vtk_test_components
+  FiltersSources
+  InteractionStyle
+  TestingCore
+  TestingRendering)
+find_package(VTK 9.1 REQUIRED
+  COMPONENTS ${_aperture_vtk_components}
+  OPTIONAL_COMPONENTS ${_aperture_vtk_test_components} Python WrappingPythonCore)
+
+set(CMAKE_RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_BINDIR}")
+set(CMAKE_LIBRARY_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_LIBDIR}")
+set(CMAKE_ARCHIVE_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_LIBDIR}")
+if (NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)
+  set(CMAKE_BUILD_TYPE Release CACHE STRING "Build type" FORCE)
+endif ()
+
+option(BUILD_SHARED_LIBS "Build shared libraries" ON)
+option(BUILD_TESTING "Build the tests" ON)
+if (BUILD_TESTING)
+  enable_testing()
+endif ()
+
+# vtk_module_build() cannot add the project root as the module's folder, so the module is scanned
+# from the driver's copy of vtk.module (named so that VTK's Remote/ glob does not find it twice).
+set(_aperture_module_file "${CMAKE_CURRENT_SOURCE_DIR}/CMake/Standalone/ApertureLighting.module")
+file(READ "${CMAKE_CURRENT_SOURCE_DIR}/vtk.module" _aperture_module_top)
+file(READ "${_aperture_module_file}" _aperture_module_copy)
+if (NOT _aperture_module_top STREQUAL _aperture_module_copy)
+  message(FATAL_ERROR
+    "CMake/Standalone/ApertureLighting.module must be an exact copy of vtk.module.")
+endif ()
+
+# Python package `aperturelighting`, for the interpreter VTK's own modules were built for.
+set(APERTURELIGHTING_WRAP_PYTHON OFF)
+if (VTK_WRAP_PYTHON AND TARGET VTK::WrappingPythonCore)
+  set(APERTURELIGHTING_WRAP_PYTHON ON)
+endif ()
+if (APERTURELIGHTING_WRAP_PYTHON)
+  find_package(Python3 "${VTK_PYTHON_VERSION}" REQUIRED COMPONENTS Interpreter)
+  if (Python3_SITEARCH MATCHES "dist-packages")
+    # Debian-style interpreters read <prefix>/lib/pythonX.Y/dist-packages.
+    set(_aperture_python_default
+      "lib/python${Python3_VERSION_MAJOR}.${Python3_VERSION_MINOR}/dist-packages")
+  else ()
+    vtk_module_python_default_destination(_aperture_python_default)
+  endif ()
+  set(APERTURELIGHTING_PYTHON_DESTINATION "${_aperture_python_default}"
+    CACHE STRING "Where the aperturelighting Python package goes, relative to the prefix")
+endif ()
+
+vtk_module_scan(
+  MODULE_FILES      "${_aperture_module_file}"
+  REQUEST_MODULES   VTK::ApertureLighting
+  PROVIDES_MODULES  _aperture_modules
+  ENABLE_TESTS      "${BUILD_TESTING}")
+
+set(_aperture_cmake_destination "${CMAKE_INSTALL_LIBDIR}/cmake/ApertureLighting")
+vtk_module_build(
+  MODULES             ${_aperture_modules}
+  PACKAGE             ApertureLighting
+  INSTALL_EXPORT      ApertureLighting
+  CMAKE_DESTINATION   "${_aperture_cmake_destination}"
+  HEADERS_DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/ApertureLighting"
+  HIERARCHY_DESTINATION "${CMAKE_INSTALL_LIBDIR}/vtk/hierarchy/ApertureLighting"
+  VERSION             "${PROJECT_VERSION}"
+  SOVERSION           "1"
+  # Relative to the driver folder: the repository's Testing/ folder.
+  TEST_DIRECTORY_NAME "../../Testing"
+  TEST_INPUT_DATA_DIRECTORY  "${CMAKE_CURRENT_SOURCE_DIR}/Testing"
+  TEST_OUTPUT_DATA_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}/Testing"
+  TEST_OUTPUT_DIRECTORY      "${CMAKE_CURRENT_BINARY_DIR}/Testing/Temporary")
+
+vtk_module_export_find_packages(
+  CMAKE_DESTINATION "${_aperture_cmake_destination}"
+  FILE_NAME         "ApertureLighting-vtk-module-find-packages.cmake"
+  MODULES           ${_aperture_modules})
+
+if (APERTURELIGHTING_WRAP_PYTHON)
+  vtk_module_wrap_python(
+    MODULES             ${_aperture_modules}
+    TARGET              ApertureLighting::Python
+    WRAPPED_MODULES     _aperture_wrapped_modules
+    PYTHON_PACKAGE      "aperturelighting"
+    MODULE_DESTINATION  "${APERTURELIGHTING_PYTHON_DESTINATION}"
+    LIBRARY_DESTINATION "${CMAKE_INSTALL_LIBDIR}"
+    CMAKE_DESTINATION   "${_aperture_cmake_destination}"
+    INSTALL_EXPORT      ApertureLightingPython
+    INSTALL_HEADERS     OFF
+    BUILD_STATIC        OFF)
+
+  set(_aperture_python_package_dir
+    "${CMAKE_BINARY_DIR}/${APERTURELIGHTING_PYTHON_DESTINATION}/aperturelighting")
+  configure_file("${CMAKE_CURRENT_SOURCE_DIR}/Wrapping/Python/aperturelighting/__init__.py"
+    "${_aperture_python_package_dir}/__init__.py" COPYONLY)
+  install(FILES "${_aperture_python_package_dir}/__init__.py"
+    DESTINATION "${APERTURELIGHTING_PYTHON_DESTINATION}/aperturelighting"
+    COMPONENT python)
+endif ()
+
+# CMake package, usable from the build tree and after installation.
+include(CMakePackageConfigHelpers)
+set(APERTURELIGHTING_VTK_COMPONENTS ${_aperture_vtk_components})
+configure_file("${CMAKE_CURRENT_SOURCE_DIR}/CMake/ApertureLightingConfig.cmake.in"
+  "${CMAKE_BINARY_DIR}/${_aperture_cmake_destination}/ApertureLightingConfig.cmake" @ONLY)
+write_basic_package_version_file(
+  "${CMAKE_BINARY_DIR}/${_aperture_cmake_destination}/ApertureLightingConfigVersion.cmake"
+  VERSION "${PROJECT_VERSION}"
+  COMPATIBILITY SameMinorVersion)
+install(
+  FILES
+    "${CMAKE_BINARY_DIR}/${_aperture_cmake_destination}/ApertureLightingConfig.cmake"
+    "${CMAKE_BINARY_DIR}/${_aperture_cmake_destination}/ApertureLightingConfigVersion.cmake"
+  DESTINATION "${_aperture_cmake_destination}"
+  COMPONENT development)
+install(FILES "${CMAKE_CURRENT_SOURCE_DIR}/LICENSE"
+  DESTINATION "${CMAKE_INSTALL_DATAROOTDIR}/doc/ApertureLighting"
+  COMPONENT development)
+
+# Environment for using the build tree: `source build/env.sh`.
+set(APERTURELIGHTING_ENV_PYTHONPATH "")
+if (APERTURELIGHTING_WRAP_PYTHON)
+  set(APERTURELIGHTING_ENV_PYTHONPATH "${CMAKE_BINARY_DIR}/${APERTURELIGHTING_PYTHON_DESTINATION}")
+endif ()
+configure_file("${CMAKE_CURRENT_SOURCE_DIR}/CMake/env.sh.in" "${CMAKE_BINARY_DIR}/env.sh" @ONLY)
