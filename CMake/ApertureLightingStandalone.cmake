@@ -8,11 +8,19 @@ set(_aperture_vtk_components
   CommonDataModel
   CommonExecutionModel
   CommonMath
+  FiltersCore
+  IOImage
   RenderingCore
   RenderingOpenGL2
-  opengl)
+  opengl
+  vtksys)
 set(_aperture_vtk_test_components
+  FiltersGeneral
   FiltersSources
+  IOGeometry
+  IOXML
+  ImagingCore
+  ImagingGeneral
   InteractionStyle
   TestingCore
   TestingRendering)
@@ -80,7 +88,8 @@ vtk_module_build(
   # Relative to the driver folder: the repository's Testing/ folder.
   TEST_DIRECTORY_NAME "../../Testing"
   TEST_INPUT_DATA_DIRECTORY  "${CMAKE_CURRENT_SOURCE_DIR}/Testing"
-  TEST_OUTPUT_DATA_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}/Testing"
+  # Test data live in the source tree (Testing/Data), read in place.
+  TEST_OUTPUT_DATA_DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}/Testing"
   TEST_OUTPUT_DIRECTORY      "${CMAKE_CURRENT_BINARY_DIR}/Testing/Temporary")
 
 vtk_module_export_find_packages(

@@ -1,0 +1,90 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    vtkTerrainRGBReader.h
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+/**
+ * @class   vtkTerrainRGBReader
+ * @brief   reads a Terrain-RGB elevation tile (PNG) as a height field
+ *
+ * Terrain-RGB tiles (Mapbox and compatible servers) store elevation in the red, green and blue
+ * bytes of a PNG: height = -10000 + (R × 65536 + G × 256 + B) × 0.1 metres. This reader decodes
+ * them into a 2D vtkImageData whose point scalars, a float array named `Elevation`, are metres,
+ * ready for vtkAperturePrecompute's height-field mode or vtkWarpScalar. Image row 0 is the bottom
+ * (southern) row, as VTK orders images; the tile's ground size is not in the file, so the grid
+ * spacing (metres per pixel) and origin are properties.
+ *
+ * A missing or unreadable file, or a PNG without at least three 8-bit channels, is an error.
+ */
+
+#ifndef vtkTerrainRGBReader_h
+#define vtkTerrainRGBReader_h
+
+#include "vtkApertureLightingModule.h" // For export macro
+#include "vtkImageAlgorithm.h"
+
+#include <string> // For std::string
+
+class VTKAPERTURELIGHTING_EXPORT vtkTerrainRGBReader : public vtkImageAlgorithm
+{
+public:
+  static vtkTerrainRGBReader* New();
+  vtkTypeMacro(vtkTerrainRGBReader, vtkImageAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The PNG file.
+   */
+  vtkSetStdStringFromCharMacro(FileName);
+  vtkGetCharFromStdStringMacro(FileName);
+  ///@}
+
+  ///@{
+  /**
+   * Ground distance between pixel centres along x and y. Default (1, 1).
+   */
+  vtkSetVector2Macro(Spacing, double);
+  vtkGetVector2Macro(Spacing, double);
+  ///@}
+
+  ///@{
+  /**
+   * Position of the first pixel. Default (0, 0, 0).
+   */
+  vtkSetVector3Macro(Origin, double);
+  vtkGetVector3Macro(Origin, double);
+  ///@}
+
+  /**
+   * Decodes one Terrain-RGB pixel to metres.
+   */
+  static double DecodeHeight(unsigned char r, unsigned char g, unsigned char b)
+  {
+    return -10000.0 + (r * 65536.0 + g * 256.0 + b) * 0.1;
+  }
+
+protected:
+  vtkTerrainRGBReader();
+  ~vtkTerrainRGBReader() override = default;
+
+  int RequestInformation(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  std::string FileName;
+  double Spacing[2] = { 1.0, 1.0 };
+  double Origin[3] = { 0.0, 0.0, 0.0 };
+
+private:
+  vtkTerrainRGBReader(const vtkTerrainRGBReader&) = delete;
+  void operator=(const vtkTerrainRGBReader&) = delete;
+};
+
+#endif

@@ -1,0 +1,223 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    TestAperturePrecomputeHeightField.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+// vtkAperturePrecompute on the Mount Fuji DEM tile: the per-texel result equals the per-vertex
+// result on the same surface triangulated; the error against a 4096-ray run falls at least as fast
+// as 1/sqrt(N); stratified sampling beats random sampling at equal ray counts.
+
+#include "vtkAperturePrecompute.h"
+#include "vtkSphericalCap.h"
+#include "vtkTerrainRGBReader.h"
+
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkExtractVOI.h"
+#include "vtkImageData.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkTestUtilities.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <vector>
+
+namespace
+{
+int Failures = 0;
+
+void Check(bool ok, const char* what, double got, double want)
+{
+  if (!ok)
+  {
+    ++Failures;
+    std::cerr << "FAIL " << what << ": got " << got << ", want " << want << "\n";
+  }
+}
+
+// The tile is about 60 m per pixel; every `step`-th pixel is kept.
+vtkSmartPointer<vtkImageData> Fuji(const char* file, int step)
+{
+  vtkNew<vtkTerrainRGBReader> reader;
+  reader->SetFileName(file);
+  reader->SetSpacing(60.0, 60.0);
+  vtkNew<vtkExtractVOI> sample;
+  sample->SetInputConnection(reader->GetOutputPort());
+  sample->SetSampleRate(step, step, 1);
+  sample->Update();
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->ShallowCopy(sample->GetOutput());
+  return image;
+}
+
+vtkSmartPointer<vtkDataArray> Run(vtkDataObject* input, int rays, int sampling)
+{
+  vtkNew<vtkAperturePrecompute> filter;
+  filter->SetInputData(input);
+  filter->SetNumberOfRays(rays);
+  filter->SetSampling(sampling);
+  filter->Update();
+  return vtkDataSet::SafeDownCast(filter->GetOutputDataObject(0))
+    ->GetPointData()
+    ->GetArray("ApertureRadius");
+}
+
+// The same surface as a polydata: grid points raised by their heights, each cell split as
+// (i,j)(i+1,j)(i+1,j+1) and (i,j)(i+1,j+1)(i,j+1), no normals given.
+vtkSmartPointer<vtkPolyData> Triangulate(vtkImageData* image)
+{
+  int dims[3];
+  image->GetDimensions(dims);
+  vtkDataArray* heights = image->GetPointData()->GetScalars();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (vtkIdType id = 0; id < image->GetNumberOfPoints(); ++id)
+  {
+    double p[3];
+    image->GetPoint(id, p);
+    p[2] += heights->GetTuple1(id);
+    points->InsertNextPoint(p);
+  }
+  vtkNew<vtkCellArray> triangles;
+  for (int j = 0; j + 1 < dims[1]; ++j)
+  {
+    for (int i = 0; i + 1 < dims[0]; ++i)
+    {
+      const vtkIdType p00 = i + j * dims[0], p10 = p00 + 1, p01 = p00 + dims[0], p11 = p01 + 1;
+      const vtkIdType a[3] = { p00, p10, p11 }, b[3] = { p00, p11, p01 };
+      triangles->InsertNextCell(3, a);
+      triangles->InsertNextCell(3, b);
+    }
+  }
+  auto surface = vtkSmartPointer<vtkPolyData>::New();
+  surface->SetPoints(points);
+  surface->SetPolys(triangles);
+  return surface;
+}
+
+void TestTexelsMatchVertices(const char* file)
+{
+  auto image = Fuji(file, 4);
+  vtkNew<vtkAperturePrecompute> perTexel;
+  perTexel->SetInputData(image);
+  perTexel->Update();
+  vtkImageData* texels = perTexel->GetImageDataOutput();
+  int dims[3];
+  texels->GetDimensions(dims);
+  Check(texels && dims[0] == 128 && dims[1] == 128 && texels->GetPointData()->GetArray("Elevation"),
+    "per-texel output is the input grid with its arrays", dims[0], 128);
+
+  vtkNew<vtkAperturePrecompute> perVertex;
+  perVertex->SetInputData(Triangulate(image));
+  perVertex->Update();
+  vtkPolyData* vertices = perVertex->GetPolyDataOutput();
+
+  vtkDataArray* r1 = texels->GetPointData()->GetArray("ApertureRadius");
+  vtkDataArray* r2 = vertices->GetPointData()->GetArray("ApertureRadius");
+  vtkDataArray* b1 = texels->GetPointData()->GetArray("BentNormal");
+  vtkDataArray* b2 = vertices->GetPointData()->GetArray("BentNormal");
+  const vtkIdType n = image->GetNumberOfPoints();
+  double sum = 0.0, worst = 0.0, worstAngle = 0.0;
+  vtkIdType differing = 0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double d = std::abs(r1->GetTuple1(i) - r2->GetTuple1(i));
+    sum += d;
+    worst = std::max(worst, d);
+    differing += d > 0.0 ? 1 : 0;
+    double u[3], v[3];
+    b1->GetTuple(i, u);
+    b2->GetTuple(i, v);
+    worstAngle = std::max(worstAngle, vtkMath::AngleBetweenVectors(u, v));
+  }
+  std::cout << "Per-texel vs per-vertex on a " << dims[0] << "x" << dims[1]
+            << " Fuji grid: mean |dr| = " << sum / n << ", max |dr| = " << worst << ", "
+            << differing << " of " << n << " points differ, max bent-normal angle " << worstAngle
+            << " rad\n";
+  // Only rays that graze an edge to within float rounding of the normals may differ.
+  Check(sum / n < 1e-4, "per-texel matches per-vertex (mean)", sum / n, 0);
+  Check(differing < n / 100, "per-texel matches per-vertex (count)", differing, 0);
+
+  // HeightScale 0 flattens the terrain: every texel is open.
+  perTexel->SetHeightScale(0.0);
+  perTexel->Update();
+  double range[2];
+  perTexel->GetImageDataOutput()->GetPointData()->GetArray("ApertureRadius")->GetRange(range);
+  Check(range[0] > 0.5 * vtkMath::Pi() - 1e-6, "HeightScale 0 gives an open plane", range[0],
+    0.5 * vtkMath::Pi());
+}
+
+double RmsSolidAngleError(vtkDataArray* r, vtkDataArray* reference)
+{
+  double sum = 0.0;
+  for (vtkIdType i = 0; i < r->GetNumberOfTuples(); ++i)
+  {
+    const double d = vtkSphericalCap::SolidAngleFromCapRadius(r->GetTuple1(i)) -
+      vtkSphericalCap::SolidAngleFromCapRadius(reference->GetTuple1(i));
+    sum += d * d;
+  }
+  return std::sqrt(sum / r->GetNumberOfTuples());
+}
+
+void TestConvergence(const char* file)
+{
+  auto image = Fuji(file, 8);
+  auto reference = Run(image, 4096, vtkAperturePrecompute::STRATIFIED);
+  const int counts[] = { 16, 64, 256, 1024 };
+  double slope[2];
+  std::vector<double> errors[2];
+  for (int sampling : { vtkAperturePrecompute::STRATIFIED, vtkAperturePrecompute::RANDOM })
+  {
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (int n : counts)
+    {
+      const double e = RmsSolidAngleError(Run(image, n, sampling), reference);
+      errors[sampling].push_back(e);
+      const double x = std::log(n), y = std::log(e);
+      sx += x;
+      sy += y;
+      sxx += x * x;
+      sxy += x * y;
+    }
+    slope[sampling] = (4 * sxy - sx * sy) / (4 * sxx - sx * sx);
+  }
+  std::cout << "RMS solid-angle error against 4096 stratified rays (64x64 Fuji grid):\n"
+            << "  rays  stratified  random\n";
+  for (int k = 0; k < 4; ++k)
+  {
+    std::cout << "  " << counts[k] << "  " << errors[0][k] << "  " << errors[1][k] << "\n";
+  }
+  std::cout << "  log-log slope: stratified " << slope[0] << ", random " << slope[1] << "\n";
+  Check(slope[0] <= -0.5, "stratified error falls at least as fast as 1/sqrt(N)", slope[0], -0.5);
+  Check(slope[1] <= -0.4, "random error falls like 1/sqrt(N)", slope[1], -0.5);
+  for (int k = 0; k < 4; ++k)
+  {
+    Check(errors[0][k] < errors[1][k], "stratified beats random at equal rays", errors[0][k],
+      errors[1][k]);
+  }
+}
+}
+
+int TestAperturePrecomputeHeightField(int argc, char* argv[])
+{
+  char* file = vtkTestUtilities::ExpandDataFileName(argc, argv, "Data/fuji-terrain-rgb.png");
+  TestTexelsMatchVertices(file);
+  TestConvergence(file);
+  delete[] file;
+  if (Failures)
+  {
+    std::cerr << Failures << " check(s) failed\n";
+    return EXIT_FAILURE;
+  }
+  return EXIT_SUCCESS;
+}
