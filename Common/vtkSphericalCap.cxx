@@ -99,6 +99,87 @@ double AngleBetween(const double u[3], const double v[3])
   vtkMath::Add(u, v, sum);
   return 2.0 * std::atan2(vtkMath::Norm(diff), vtkMath::Norm(sum));
 }
+
+// Solid angle of the intersection of caps of radii r1, r2 (clamped, not NaN) whose axes are d
+// apart. When the boundary circles cross, also the triangle's angles (crossing = true).
+double LensArea(double r1, double r2, double d, double& phi1, double& phi2, bool& crossing)
+{
+  crossing = false;
+  const double rMin = std::min(r1, r2);
+  const double rMax = std::max(r1, r2);
+  if (rMin <= 0.0 || d >= r1 + r2)
+  {
+    return 0.0;
+  }
+  if (d <= rMax - rMin)
+  {
+    return CapArea(rMin);
+  }
+  if (r1 + r2 + d >= 2.0 * Pi)
+  {
+    // The complements are disjoint: the union is the whole sphere.
+    return std::max(0.0, CapArea(r1) + CapArea(r2) - 4.0 * Pi);
+  }
+  // Tovchigrechko & Vakser: A = 2[π − ψ − φ1 cos r1 − φ2 cos r2], rearranged as two sectors minus
+  // the quadrilateral (a1, P, a2, P'), i.e. 4 φk sin²(rk/2) − 2 E, which avoids cancellation.
+  crossing = true;
+  double excess;
+  LensTriangle(r1, r2, d, phi1, phi2, excess);
+  const double h1 = std::sin(0.5 * r1);
+  const double h2 = std::sin(0.5 * r2);
+  const double area = 4.0 * (phi1 * h1 * h1 + phi2 * h2 * h2) - 2.0 * excess;
+  return std::min(std::max(area, 0.0), CapArea(rMin));
+}
+
+// Area and first moment of the intersection of caps (u1, r1) and (u2, r2), unit axes d apart,
+// radii clamped and not NaN.
+double Lens(const double u1[3], double r1, const double u2[3], double r2, double d, double m[3])
+{
+  m[0] = m[1] = m[2] = 0.0;
+  double phi1 = 0.0, phi2 = 0.0;
+  bool crossing;
+  const double area = LensArea(r1, r2, d, phi1, phi2, crossing);
+  if (area <= 0.0)
+  {
+    return 0.0;
+  }
+  const double s1 = std::sin(r1);
+  const double s2 = std::sin(r2);
+  if (!crossing && d <= std::abs(r1 - r2))
+  {
+    // The moment of a cap (a, r) is π sin²r a.
+    const double* axis = r1 <= r2 ? u1 : u2;
+    const double s = r1 <= r2 ? s1 : s2;
+    for (int i = 0; i < 3; ++i)
+    {
+      m[i] = Pi * s * s * axis[i];
+    }
+    return area;
+  }
+  if (!crossing)
+  {
+    // Whole sphere (moment 0) minus the two disjoint complements.
+    for (int i = 0; i < 3; ++i)
+    {
+      m[i] = Pi * (s1 * s1 * u1[i] + s2 * s2 * u2[i]);
+    }
+    return area;
+  }
+  // M = Σk sin²rk φk uk − sin rk cos rk sin φk tk, with tk the unit tangent at uk toward the other
+  // axis: t1 = (δ + k u1)/sin d and t2 = (−δ + k u2)/sin d, δ = u2 − u1, k = 1 − cos d. Grouping
+  // the δ terms keeps nearby small caps accurate, and coincident axes need no special case.
+  const double w1 = s1 * std::cos(r1) * std::sin(phi1);
+  const double w2 = s2 * std::cos(r2) * std::sin(phi2);
+  const double sinD = std::sin(d);
+  const double halfTan = std::tan(0.5 * d);
+  const double deltaScale = sinD > 0.0 ? (w1 - w2) / sinD : 0.0;
+  for (int i = 0; i < 3; ++i)
+  {
+    const double tangents = halfTan * (w1 * u1[i] + w2 * u2[i]) + deltaScale * (u2[i] - u1[i]);
+    m[i] = s1 * s1 * phi1 * u1[i] + s2 * s2 * phi2 * u2[i] - tangents;
+  }
+  return area;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -130,29 +211,9 @@ double vtkSphericalCap::IntersectionArea(double r1, double r2, double d)
   {
     return 0.0;
   }
-  const double rMin = std::min(r1, r2);
-  const double rMax = std::max(r1, r2);
-  if (rMin <= 0.0 || d >= r1 + r2)
-  {
-    return 0.0;
-  }
-  if (d <= rMax - rMin)
-  {
-    return CapArea(rMin);
-  }
-  if (r1 + r2 + d >= 2.0 * Pi)
-  {
-    // The complements are disjoint: the union is the whole sphere.
-    return std::max(0.0, CapArea(r1) + CapArea(r2) - 4.0 * Pi);
-  }
-  // Tovchigrechko & Vakser: A = 2[π − ψ − φ1 cos r1 − φ2 cos r2], rearranged as two sectors minus
-  // the quadrilateral (a1, P, a2, P'), i.e. 4 φk sin²(rk/2) − 2 E, which avoids cancellation.
-  double phi1, phi2, excess;
-  LensTriangle(r1, r2, d, phi1, phi2, excess);
-  const double h1 = std::sin(0.5 * r1);
-  const double h2 = std::sin(0.5 * r2);
-  const double area = 4.0 * (phi1 * h1 * h1 + phi2 * h2 * h2) - 2.0 * excess;
-  return std::min(std::max(area, 0.0), CapArea(rMin));
+  double phi1, phi2;
+  bool crossing;
+  return LensArea(r1, r2, d, phi1, phi2, crossing);
 }
 
 //------------------------------------------------------------------------------
@@ -188,51 +249,7 @@ void vtkSphericalCap::IntersectionMoment(
   {
     return;
   }
-  const double d = AngleBetween(u1, u2);
-  const double rMin = std::min(r1, r2);
-  const double rMax = std::max(r1, r2);
-  if (rMin <= 0.0 || d >= r1 + r2)
-  {
-    return;
-  }
-  const double s1 = std::sin(r1);
-  const double s2 = std::sin(r2);
-  if (d <= rMax - rMin)
-  {
-    // The moment of a cap (a, r) is π sin²r a.
-    const double* axis = r1 <= r2 ? u1 : u2;
-    const double s = std::sin(rMin);
-    for (int i = 0; i < 3; ++i)
-    {
-      m[i] = Pi * s * s * axis[i];
-    }
-    return;
-  }
-  if (r1 + r2 + d >= 2.0 * Pi)
-  {
-    // Whole sphere (moment 0) minus the two disjoint complements.
-    for (int i = 0; i < 3; ++i)
-    {
-      m[i] = Pi * (s1 * s1 * u1[i] + s2 * s2 * u2[i]);
-    }
-    return;
-  }
-  double phi1, phi2, excess;
-  LensTriangle(r1, r2, d, phi1, phi2, excess);
-
-  // M = Σk sin²rk φk uk − sin rk cos rk sin φk tk, with tk the unit tangent at uk toward the other
-  // axis: t1 = (δ + k u1)/sin d and t2 = (−δ + k u2)/sin d, δ = u2 − u1, k = 1 − cos d. Grouping
-  // the δ terms keeps nearby small caps accurate, and coincident axes need no special case.
-  const double w1 = s1 * std::cos(r1) * std::sin(phi1);
-  const double w2 = s2 * std::cos(r2) * std::sin(phi2);
-  const double sinD = std::sin(d);
-  const double halfTan = std::tan(0.5 * d);
-  const double deltaScale = sinD > 0.0 ? (w1 - w2) / sinD : 0.0;
-  for (int i = 0; i < 3; ++i)
-  {
-    const double tangents = halfTan * (w1 * u1[i] + w2 * u2[i]) + deltaScale * (u2[i] - u1[i]);
-    m[i] = s1 * s1 * phi1 * u1[i] + s2 * s2 * phi2 * u2[i] - tangents;
-  }
+  Lens(u1, r1, u2, r2, AngleBetween(u1, u2), m);
 }
 
 //------------------------------------------------------------------------------
@@ -307,6 +324,133 @@ double vtkSphericalCap::SimplifiedShadowFactor(double rp, double rl, double d)
   const double ramp = SimplifiedRamp(rp, rl, d);
   const double share = rl > 0.0 ? std::min(1.0, CapArea(rp) / CapArea(rl)) : 1.0;
   return ramp * share;
+}
+
+namespace
+{
+// The direction halfway along the overlap of caps (l, rl) and (bent, rp) on the great circle
+// through their axes, d apart: a cheap stand-in for the lens centroid.
+void OverlapMiddle(
+  const double l[3], double rl, const double bent[3], double rp, double d, double c[3])
+{
+  const double sinD = std::sin(d);
+  if (!(sinD > 1e-6))
+  {
+    std::copy(l, l + 3, c);
+    return;
+  }
+  const double t = 0.5 * (std::max(-rl, d - rp) + std::min(rl, d + rp));
+  const double cosT = std::cos(t);
+  const double sinT = std::sin(t);
+  const double cosD = std::cos(d);
+  for (int i = 0; i < 3; ++i)
+  {
+    // Rotate l toward bent by t.
+    c[i] = cosT * l[i] + sinT * (bent[i] - cosD * l[i]) / sinD;
+  }
+}
+
+// Unit aperture and light axes, clamped radii (rp <= π/2, MinimumLightRadius <= rl <= π/2);
+// false for NaN radii and unusable axes.
+bool ShadingInputs(
+  const double bent[3], double& rp, const double l[3], double& rl, double ub[3], double ul[3])
+{
+  rp = ClampAngle(rp);
+  rl = ClampAngle(rl);
+  if (std::isnan(rp) || std::isnan(rl) || !UnitAxis(bent, ub) || !UnitAxis(l, ul))
+  {
+    return false;
+  }
+  rp = std::min(rp, 0.5 * Pi);
+  rl = std::min(std::max(rl, vtkSphericalCap::MinimumLightRadius), 0.5 * Pi);
+  return true;
+}
+}
+
+//------------------------------------------------------------------------------
+double vtkSphericalCap::LightTransfer(int shading, int lambert, const double n[3],
+  const double bent[3], double rp, const double l[3], double rl)
+{
+  double un[3] = { 0.0, 0.0, 0.0 }, ub[3], ul[3];
+  if (!ShadingInputs(bent, rp, l, rl, ub, ul))
+  {
+    return 0.0;
+  }
+  if (!UnitAxis(n, un))
+  {
+    // No Lambert term without a normal (BENT_NORMAL does not use it).
+    un[0] = un[1] = un[2] = 0.0;
+  }
+  const double d = AngleBetween(ub, ul);
+  const double sinL = std::sin(rl);
+  const double radiance = 1.0 / (Pi * sinL * sinL);
+  switch (shading)
+  {
+    case EXACT:
+    {
+      double m[3];
+      const double area = Lens(ul, rl, ub, rp, d, m);
+      if (lambert == MOMENT)
+      {
+        return std::max(0.0, vtkMath::Dot(un, m)) * radiance;
+      }
+      const double length = vtkMath::Norm(m);
+      return length > 0.0 ? area * std::max(0.0, vtkMath::Dot(un, m) / length) * radiance : 0.0;
+    }
+    case SMOOTHSTEP:
+    {
+      double c[3];
+      OverlapMiddle(ul, rl, ub, rp, d, c);
+      return vtkSphericalCap::IntersectionAreaSmoothstep(rl, rp, d) *
+        std::max(0.0, vtkMath::Dot(un, c)) * radiance;
+    }
+    case SIMPLIFIED:
+      return vtkSphericalCap::SimplifiedShadowFactor(rp, rl, d) *
+        std::max(0.0, vtkMath::Dot(un, ul));
+    case BENT_NORMAL:
+      return CapArea(rp) / (2.0 * Pi) * std::max(0.0, vtkMath::Dot(ub, ul));
+    default:
+      return 0.0;
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkSphericalCap::LightCoverage(
+  int shading, const double bent[3], double rp, const double l[3], double rl)
+{
+  double ub[3], ul[3];
+  if (!ShadingInputs(bent, rp, l, rl, ub, ul))
+  {
+    return 0.0;
+  }
+  const double d = AngleBetween(ub, ul);
+  switch (shading)
+  {
+    case EXACT:
+      return vtkSphericalCap::IntersectionArea(rl, rp, d);
+    case SMOOTHSTEP:
+      return vtkSphericalCap::IntersectionAreaSmoothstep(rl, rp, d);
+    case SIMPLIFIED:
+      return vtkSphericalCap::SimplifiedShadowFactor(rp, rl, d) *
+        std::min(CapArea(rl), CapArea(rp));
+    case BENT_NORMAL:
+      return CapArea(rp) / (2.0 * Pi) * CapArea(rl);
+    default:
+      return 0.0;
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkSphericalCap::SkyTransfer(
+  double rp, double covered, double cosNormalBent, bool cosineWeighted)
+{
+  rp = std::min(ClampAngle(rp), 0.5 * Pi);
+  if (std::isnan(rp) || std::isnan(covered) || std::isnan(cosNormalBent))
+  {
+    return 0.0;
+  }
+  const double open = std::max(0.0, CapArea(rp) - std::max(0.0, covered)) / (2.0 * Pi);
+  return cosineWeighted ? open * std::min(1.0, std::max(0.0, cosNormalBent)) : open;
 }
 
 //------------------------------------------------------------------------------

@@ -118,6 +118,70 @@ public:
    */
   static double SimplifiedShadowFactor(double rp, double rl, double d);
 
+  /**
+   * Shading models of ambient aperture lighting (see LightTransfer()).
+   */
+  enum Shading
+  {
+    EXACT = 0,      ///< exact intersection area of the light and aperture caps
+    SMOOTHSTEP = 1, ///< the paper's smoothstep approximation of that area
+    SIMPLIFIED = 2, ///< the 2006 demo's shadow factor times n·l
+    BENT_NORMAL = 3 ///< Lambert with the bent normal, scaled by the aperture's share of the sky
+  };
+
+  /**
+   * Lambert factor of the EXACT model.
+   */
+  enum Lambert
+  {
+    CENTROID = 0, ///< the paper's: intersection area × max(0, n · centroid direction)
+    MOMENT = 1    ///< exact for a light above the horizon: max(0, n · first moment)
+  };
+
+  /**
+   * Smallest light radius the shading functions use (rad); smaller lights are treated as this.
+   */
+  static constexpr double MinimumLightRadius = 1e-4;
+
+  /**
+   * Irradiance at a point with normal n and aperture (bent, rp) from a light of angular radius
+   * rl in direction l, for a light of intensity 1. The light's radiance is 1/(π sin²rl), so an
+   * unoccluded light at normal incidence, fully above the horizon, gives 1, as a VTK light of
+   * intensity 1 does; this is what keeps apertures and plain VTK lighting comparable.
+   *
+   * - EXACT, MOMENT: max(0, n · M)/(π sin²rl), M the lens moment; exact for a light fully
+   *   above the horizon seen through a circular aperture.
+   * - EXACT, CENTROID: A max(0, n · c)/(π sin²rl), A the lens area and c its centroid direction
+   *   (the paper's Lambert approximation; for large lights it overestimates by up to
+   *   2/(1 + cos rl)).
+   * - SMOOTHSTEP: the smoothstep area times max(0, n · c')/(π sin²rl), where c' is the middle of
+   *   the overlap of the two caps along the great circle through their axes (a cheap centroid).
+   * - SIMPLIFIED: SimplifiedShadowFactor() × max(0, n · l).
+   * - BENT_NORMAL: (Ωp/2π) max(0, bent · l), Ωp the aperture's solid angle (Landis 2002).
+   *
+   * Directions need not be unit vectors. A zero-length or non-finite aperture or light axis, or
+   * a NaN radius, gives 0; so does an unusable normal, except for BENT_NORMAL, which does not use
+   * it. Lights smaller than MinimumLightRadius are treated as that size.
+   */
+  static double LightTransfer(int shading, int lambert, const double n[3], const double bent[3],
+    double rp, const double l[3], double rl);
+
+  /**
+   * Solid angle of the aperture that a light covers under a shading model: the lens area for
+   * EXACT and SMOOTHSTEP, SimplifiedShadowFactor() × min(Ωl, Ωp) for SIMPLIFIED, and
+   * (Ωp/2π) Ωl for BENT_NORMAL. Divided by Ωl it is the part of the light the point sees, which
+   * also dims the light's specular highlight.
+   */
+  static double LightCoverage(
+    int shading, const double bent[3], double rp, const double l[3], double rl);
+
+  /**
+   * The sky term of the paper (§3.3): the part of the aperture the lights do not cover,
+   * max(0, Ωp − covered)/2π, optionally weighted by max(0, n · bent) (cosNormalBent). An open
+   * aperture under no light gives 1, so a sky of radiance L·SkyColor adds L·SkyColor.
+   */
+  static double SkyTransfer(double rp, double covered, double cosNormalBent, bool cosineWeighted);
+
 protected:
   vtkSphericalCap() = default;
   ~vtkSphericalCap() override = default;

@@ -83,15 +83,14 @@ void sphericalCapLensTriangle(float r1, float r2, float d,
   excess = 4.0 * sphericalCapAtan2(sqrt(max(0.0, t)), 1.0);
 }
 
-float sphericalCapIntersectionArea(float r1, float r2, float d)
+// Solid angle of the intersection of caps of radii r1, r2 (clamped, not NaN) whose axes are d
+// apart; when the boundary circles cross, also the triangle's angles (crossing = true).
+float sphericalCapLensArea(float r1, float r2, float d,
+  out float phi1, out float phi2, out bool crossing)
 {
-  if (isnan(r1) || isnan(r2) || isnan(d))
-  {
-    return 0.0;
-  }
-  r1 = clamp(r1, 0.0, sphericalCapPi);
-  r2 = clamp(r2, 0.0, sphericalCapPi);
-  d = clamp(d, 0.0, sphericalCapPi);
+  phi1 = 0.0;
+  phi2 = 0.0;
+  crossing = false;
   float rMin = min(r1, r2);
   if (rMin <= 0.0 || d >= r1 + r2)
   {
@@ -105,12 +104,63 @@ float sphericalCapIntersectionArea(float r1, float r2, float d)
   {
     return max(0.0, sphericalCapArea(r1) + sphericalCapArea(r2) - 4.0 * sphericalCapPi);
   }
-  float phi1, phi2, excess;
+  crossing = true;
+  float excess;
   sphericalCapLensTriangle(r1, r2, d, phi1, phi2, excess);
   float h1 = sin(0.5 * r1);
   float h2 = sin(0.5 * r2);
   float area = 4.0 * (phi1 * h1 * h1 + phi2 * h2 * h2) - 2.0 * excess;
   return clamp(area, 0.0, sphericalCapArea(rMin));
+}
+
+// Area and first moment of the intersection of caps (u1, r1) and (u2, r2), unit axes d apart.
+float sphericalCapLens(vec3 u1, float r1, vec3 u2, float r2, float d, out vec3 moment)
+{
+  moment = vec3(0.0);
+  float phi1, phi2;
+  bool crossing;
+  float area = sphericalCapLensArea(r1, r2, d, phi1, phi2, crossing);
+  if (area <= 0.0)
+  {
+    return 0.0;
+  }
+  float s1 = sin(r1);
+  float s2 = sin(r2);
+  if (!crossing && d <= abs(r1 - r2))
+  {
+    float s = r1 <= r2 ? s1 : s2;
+    moment = sphericalCapPi * s * s * (r1 <= r2 ? u1 : u2);
+    return area;
+  }
+  if (!crossing)
+  {
+    moment = sphericalCapPi * (s1 * s1 * u1 + s2 * s2 * u2);
+    return area;
+  }
+  // The tangents at u1 and u2 toward each other are (delta + k u1)/sin d and (-delta + k u2)/sin d,
+  // delta = u2 - u1, k = 1 - cos d; grouping the delta terms keeps nearby small caps accurate.
+  float w1 = s1 * cos(r1) * sin(phi1);
+  float w2 = s2 * cos(r2) * sin(phi2);
+  float sinD = sin(d);
+  vec3 tangents = tan(0.5 * d) * (w1 * u1 + w2 * u2);
+  if (sinD > 0.0)
+  {
+    tangents += (w1 - w2) / sinD * (u2 - u1);
+  }
+  moment = s1 * s1 * phi1 * u1 + s2 * s2 * phi2 * u2 - tangents;
+  return area;
+}
+
+float sphericalCapIntersectionArea(float r1, float r2, float d)
+{
+  if (isnan(r1) || isnan(r2) || isnan(d))
+  {
+    return 0.0;
+  }
+  float phi1, phi2;
+  bool crossing;
+  return sphericalCapLensArea(clamp(r1, 0.0, sphericalCapPi), clamp(r2, 0.0, sphericalCapPi),
+    clamp(d, 0.0, sphericalCapPi), phi1, phi2, crossing);
 }
 
 float sphericalCapIntersectionAreaSmoothstep(float r1, float r2, float d)
@@ -151,38 +201,10 @@ vec3 sphericalCapIntersectionMoment(vec3 a1, float r1, vec3 a2, float r2)
   {
     return vec3(0.0);
   }
-  r1 = clamp(r1, 0.0, sphericalCapPi);
-  r2 = clamp(r2, 0.0, sphericalCapPi);
-  float d = sphericalCapDistance(u1, u2);
-  float rMin = min(r1, r2);
-  if (rMin <= 0.0 || d >= r1 + r2)
-  {
-    return vec3(0.0);
-  }
-  float s1 = sin(r1);
-  float s2 = sin(r2);
-  if (d <= max(r1, r2) - rMin)
-  {
-    float s = sin(rMin);
-    return sphericalCapPi * s * s * (r1 <= r2 ? u1 : u2);
-  }
-  if (r1 + r2 + d >= 2.0 * sphericalCapPi)
-  {
-    return sphericalCapPi * (s1 * s1 * u1 + s2 * s2 * u2);
-  }
-  float phi1, phi2, excess;
-  sphericalCapLensTriangle(r1, r2, d, phi1, phi2, excess);
-  // The tangents at u1 and u2 toward each other are (delta + k u1)/sin d and (-delta + k u2)/sin d,
-  // delta = u2 - u1, k = 1 - cos d; grouping the delta terms keeps nearby small caps accurate.
-  float w1 = s1 * cos(r1) * sin(phi1);
-  float w2 = s2 * cos(r2) * sin(phi2);
-  float sinD = sin(d);
-  vec3 tangents = tan(0.5 * d) * (w1 * u1 + w2 * u2);
-  if (sinD > 0.0)
-  {
-    tangents += (w1 - w2) / sinD * (u2 - u1);
-  }
-  return s1 * s1 * phi1 * u1 + s2 * s2 * phi2 * u2 - tangents;
+  vec3 moment;
+  sphericalCapLens(u1, clamp(r1, 0.0, sphericalCapPi), u2, clamp(r2, 0.0, sphericalCapPi),
+    sphericalCapDistance(u1, u2), moment);
+  return moment;
 }
 
 // Unit centroid direction of the intersection, or vec3(0) when it is empty.
@@ -265,4 +287,86 @@ float sphericalCapSimplifiedShadowFactor(float rp, float rl, float d)
   float ramp = sphericalCapSimplifiedRamp(rp, rl, d);
   float share = rl > 0.0 ? min(1.0, sphericalCapArea(rp) / sphericalCapArea(rl)) : 1.0;
   return ramp * share;
+}
+
+// Shading models and Lambert factors, as in vtkSphericalCap::Shading and ::Lambert.
+const int sphericalCapExact = 0;
+const int sphericalCapSmoothstep = 1;
+const int sphericalCapSimplified = 2;
+const int sphericalCapBentNormal = 3;
+const int sphericalCapCentroid = 0;
+const int sphericalCapMoment = 1;
+const float sphericalCapMinimumLightRadius = 1e-4;
+
+// The middle of the overlap of caps (l, rl) and (bent, rp) along the great circle through their
+// axes, d apart: a cheap stand-in for the lens centroid.
+vec3 sphericalCapOverlapMiddle(vec3 l, float rl, vec3 bent, float rp, float d)
+{
+  float sinD = sin(d);
+  if (!(sinD > 1e-6))
+  {
+    return l;
+  }
+  float t = 0.5 * (max(-rl, d - rp) + min(rl, d + rp));
+  return cos(t) * l + sin(t) * (bent - cos(d) * l) / sinD;
+}
+
+// vtkSphericalCap::LightTransfer() and, in coverage, vtkSphericalCap::LightCoverage().
+float sphericalCapLightTransfer(int shading, int lambert, vec3 n, vec3 bent, float rp, vec3 l,
+  float rl, out float coverage)
+{
+  coverage = 0.0;
+  vec3 un, ub, ul;
+  // An unusable normal leaves un = 0: no Lambert term, the coverage still stands.
+  sphericalCapUnitAxis(n, un);
+  if (isnan(rp) || isnan(rl) || !sphericalCapUnitAxis(bent, ub) || !sphericalCapUnitAxis(l, ul))
+  {
+    return 0.0;
+  }
+  rp = clamp(rp, 0.0, 0.5 * sphericalCapPi);
+  rl = clamp(rl, sphericalCapMinimumLightRadius, 0.5 * sphericalCapPi);
+  float d = sphericalCapDistance(ub, ul);
+  float sinL = sin(rl);
+  float radiance = 1.0 / (sphericalCapPi * sinL * sinL);
+  if (shading == sphericalCapExact)
+  {
+    vec3 m;
+    coverage = sphericalCapLens(ul, rl, ub, rp, d, m);
+    if (lambert == sphericalCapMoment)
+    {
+      return max(0.0, dot(un, m)) * radiance;
+    }
+    float length = length(m);
+    return length > 0.0 ? coverage * max(0.0, dot(un, m) / length) * radiance : 0.0;
+  }
+  if (shading == sphericalCapSmoothstep)
+  {
+    coverage = sphericalCapIntersectionAreaSmoothstep(rl, rp, d);
+    return coverage * max(0.0, dot(un, sphericalCapOverlapMiddle(ul, rl, ub, rp, d))) * radiance;
+  }
+  if (shading == sphericalCapSimplified)
+  {
+    float shadow = sphericalCapSimplifiedShadowFactor(rp, rl, d);
+    coverage = shadow * min(sphericalCapArea(rl), sphericalCapArea(rp));
+    return shadow * max(0.0, dot(un, ul));
+  }
+  if (shading == sphericalCapBentNormal)
+  {
+    float open = sphericalCapArea(rp) / (2.0 * sphericalCapPi);
+    coverage = open * sphericalCapArea(rl);
+    return open * max(0.0, dot(ub, ul));
+  }
+  return 0.0;
+}
+
+// vtkSphericalCap::SkyTransfer().
+float sphericalCapSkyTransfer(float rp, float covered, float cosNormalBent, bool cosineWeighted)
+{
+  if (isnan(rp) || isnan(covered) || isnan(cosNormalBent))
+  {
+    return 0.0;
+  }
+  rp = clamp(rp, 0.0, 0.5 * sphericalCapPi);
+  float open = max(0.0, sphericalCapArea(rp) - max(0.0, covered)) / (2.0 * sphericalCapPi);
+  return cosineWeighted ? open * clamp(cosNormalBent, 0.0, 1.0) : open;
 }

@@ -546,6 +546,83 @@ void TestRotation()
 }
 }
 
+// The shading functions: analytic limits and their relation to the other functions.
+void TestShading()
+{
+  const int cap = vtkSphericalCap::EXACT, smooth = vtkSphericalCap::SMOOTHSTEP,
+            simple = vtkSphericalCap::SIMPLIFIED, bentMode = vtkSphericalCap::BENT_NORMAL;
+  const int centroid = vtkSphericalCap::CENTROID, moment = vtkSphericalCap::MOMENT;
+  const double n[3] = { 0.0, 0.0, 1.0 };
+  double worst = 0.0;
+  for (double rl : { 4.7e-3, 0.064, 0.314, 0.785 })
+  {
+    const double scale = Pi * std::sin(rl) * std::sin(rl);
+    for (int i = 0; i <= 36; ++i)
+    {
+      const double theta = Pi * i / 36.0;
+      const double l[3] = { std::sin(theta), 0.0, std::cos(theta) };
+      // An open aperture is the hemisphere: the exact moment model is Snyder's formula.
+      const double t = vtkSphericalCap::LightTransfer(cap, moment, n, n, 0.5 * Pi, l, rl);
+      const double want = vtkSphericalCap::SphereLightIrradiance(rl, theta) / scale;
+      worst = std::max(worst, std::abs(t - want));
+      Check(std::abs(t - want) < 1e-9, "open aperture: exact moment = horizon-clipped sphere light",
+        0.5 * Pi, rl, theta, t, want);
+    }
+    // Inside an open aperture and above the horizon: moment gives n.l exactly, the centroid
+    // overestimates by 2/(1 + cos rl).
+    const double l[3] = { std::sin(0.3), 0.0, std::cos(0.3) };
+    const double cosT = std::cos(0.3);
+    if (0.3 + rl < 0.5 * Pi)
+    {
+      Check(
+        std::abs(vtkSphericalCap::LightTransfer(cap, moment, n, n, 0.5 * Pi, l, rl) - cosT) < 1e-12,
+        "unoccluded light: exact moment gives n.l", 0.5 * Pi, rl, 0.3, 0, cosT);
+      const double c = vtkSphericalCap::LightTransfer(cap, centroid, n, n, 0.5 * Pi, l, rl);
+      Check(std::abs(c - cosT * 2.0 / (1.0 + std::cos(rl))) < 1e-9,
+        "unoccluded light: centroid overestimates by 2/(1 + cos rl)", 0.5 * Pi, rl, 0.3, c, cosT);
+    }
+    // A closed aperture lets no light through; the coverage is the lens area.
+    for (int mode : { cap, smooth, simple })
+    {
+      Check(vtkSphericalCap::LightTransfer(mode, centroid, n, n, 0.0, l, rl) == 0.0,
+        "closed aperture: dark", 0, rl, mode, 0, 0);
+    }
+    const double bent[3] = { std::sin(0.5), 0.0, std::cos(0.5) };
+    Check(std::abs(vtkSphericalCap::LightCoverage(cap, bent, 0.6, l, rl) -
+            vtkSphericalCap::IntersectionArea(0.6, rl, 0.2)) < 1e-12,
+      "coverage is the lens area", 0.6, rl, 0.2, 0, 0);
+  }
+  std::cout << "Open aperture, exact moment vs Snyder: max difference " << worst << "\n";
+
+  // Sun-sized lights in an open aperture: every model gives VTK's n.l.
+  for (int mode : { cap, smooth, simple, bentMode })
+  {
+    for (int lambert : { centroid, moment })
+    {
+      const double l[3] = { 0.6, 0.0, 0.8 };
+      const double t = vtkSphericalCap::LightTransfer(mode, lambert, n, n, 0.5 * Pi, l, 4.7e-3);
+      Check(std::abs(t - 0.8) < 1e-4, "sun in an open aperture: n.l", mode, lambert, 0, t, 0.8);
+    }
+  }
+  // The sky fills what the light leaves of the aperture.
+  Check(std::abs(vtkSphericalCap::SkyTransfer(0.5 * Pi, 0.0, 1.0, true) - 1.0) < 1e-12,
+    "open sky: 1", 0, 0, 0, 0, 1);
+  Check(std::abs(vtkSphericalCap::SkyTransfer(0.5 * Pi, Pi, 1.0, false) - 0.5) < 1e-12,
+    "half the aperture covered: 1/2", 0, 0, 0, 0, 0.5);
+  Check(std::abs(vtkSphericalCap::SkyTransfer(1.0, 0.0, 0.5, true) -
+          0.5 * vtkSphericalCap::SolidAngleFromCapRadius(1.0) / (2.0 * Pi)) < 1e-12,
+    "cosine-weighted sky", 1, 0, 0, 0, 0);
+  // Bad input gives 0.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double zero[3] = { 0.0, 0.0, 0.0 };
+  const double l[3] = { 0.0, 0.0, 1.0 };
+  Check(vtkSphericalCap::LightTransfer(cap, moment, n, n, nan, l, 0.1) == 0.0 &&
+      vtkSphericalCap::LightTransfer(cap, moment, zero, n, 1.0, l, 0.1) == 0.0 &&
+      vtkSphericalCap::LightCoverage(cap, n, 1.0, zero, 0.1) == 0.0 &&
+      vtkSphericalCap::SkyTransfer(nan, 0.0, 1.0, true) == 0.0,
+    "shading with bad input: 0", 0, 0, 0, 0, 0);
+}
+
 int TestSphericalCap(int, char*[])
 {
   TestReferenceAgainstLattice();
@@ -554,6 +631,7 @@ int TestSphericalCap(int, char*[])
   TestSphereLight();
   TestEdgeCases();
   TestRotation();
+  TestShading();
   if (Failures > 0)
   {
     std::cerr << Failures << " check(s) failed\n";
