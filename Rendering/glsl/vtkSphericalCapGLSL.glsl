@@ -4,15 +4,23 @@
 
 const float sphericalCapPi = 3.14159265358979;
 
-// 2 pi (1 - cos r) without cancellation for small r.
-float sphericalCapArea(float r)
+// A software rasteriser's built-in trigonometry (llvmpipe's) reduces any argument's range and
+// costs as much as all the rest of the shading, and its atan() is off by a constant 2e-5
+// relative, which the cancellations in the lens moment amplify: the shading uses these minimax
+// polynomials instead.
+
+// sin(x) for |x| <= pi/2 (relative error 5e-9).
+float sphericalCapSin(float x)
 {
-  float s = sin(0.5 * r);
-  return 4.0 * sphericalCapPi * s * s;
+  float u = x * x;
+  float p = u * 2.60190307e-06 - 0.000198074187;
+  p = p * u + 0.00833302514;
+  p = p * u - 0.166666567;
+  return x * (p * u + 0.999999995);
 }
 
-// atan(y, x) with full relative precision (0 when both are 0). Built-in atan() may be off by a
-// constant 2e-5 relative (llvmpipe), which the cancellations in the lens moment amplify.
+// atan(y, x) with full relative precision (0 when both are 0; relative error 1.5e-8 before
+// rounding).
 float sphericalCapAtan2(float y, float x)
 {
   float ax = abs(x);
@@ -22,13 +30,17 @@ float sphericalCapAtan2(float y, float x)
   {
     return 0.0;
   }
-  // Halve the angle twice, atan(t) = 2 atan(t / (1 + sqrt(1 + t^2))), then an odd series.
   float t = min(ax, ay) / hi;
-  t = t / (1.0 + sqrt(1.0 + t * t));
-  t = t / (1.0 + sqrt(1.0 + t * t));
-  float t2 = t * t;
-  float a = 4.0 * t *
-    (1.0 - t2 * (1.0 / 3.0 - t2 * (1.0 / 5.0 - t2 * (1.0 / 7.0 - t2 * (1.0 / 9.0 - t2 / 11.0)))));
+  float u = t * t;
+  // atan(t) = t P(t^2) on [0, 1], by Horner's rule.
+  float p = u * 0.00284988906 - 0.016068628;
+  p = p * u + 0.0426915203;
+  p = p * u - 0.0750429488;
+  p = p * u + 0.106409343;
+  p = p * u - 0.142036446;
+  p = p * u + 0.199926194;
+  p = p * u - 0.333330733;
+  float a = t * (p * u + 0.999999985);
   if (ay > ax)
   {
     a = 0.5 * sphericalCapPi - a;
@@ -40,10 +52,11 @@ float sphericalCapAtan2(float y, float x)
   return y < 0.0 ? -a : a;
 }
 
-// Angle between unit vectors, accurate near 0 and pi.
-float sphericalCapDistance(vec3 u, vec3 v)
+// 2 pi (1 - cos r) without cancellation for small r, for r in [0, pi].
+float sphericalCapArea(float r)
 {
-  return 2.0 * sphericalCapAtan2(length(u - v), length(u + v));
+  float s = sphericalCapSin(0.5 * r);
+  return 4.0 * sphericalCapPi * s * s;
 }
 
 float sphericalCapSolidAngle(float r)
@@ -61,88 +74,135 @@ float sphericalCapRadiusFromSolidAngle(float a)
   return 2.0 * sphericalCapAtan2(sqrt(x), sqrt(1.0 - x));
 }
 
-// Angles at a1 and a2 and spherical excess of the triangle (a1, a2, crossing point).
-void sphericalCapLensTriangle(float r1, float r2, float d,
-  out float phi1, out float phi2, out float excess)
+// A cap ready for the shading equations: unit axis, radius, and the sine and cosine of half the
+// radius, from which the addition formulas give every other angle without trigonometry.
+struct sphericalCapCap
 {
-  // The larger radius meets d first: with a small cap on the other's rim, (r1 + r2) - d would
-  // round the small radius away and the angles would no longer match the axes.
-  float rBig = max(r1, r2);
-  float rSmall = min(r1, r2);
-  float e = d - rBig;
-  float sSmall = max(0.0, 0.5 * (rSmall + e));
-  float sBig = 0.5 * ((rBig - rSmall) + d);
-  float sd = max(0.0, 0.5 * (rSmall - e));
-  float s1 = r1 >= r2 ? sSmall : sBig;
-  float s2 = r1 >= r2 ? sBig : sSmall;
-  float s = 0.5 * (r1 + r2 + d);
-  float sinS = sin(s);
-  phi1 = 2.0 * sphericalCapAtan2(sqrt(sin(s1) * sin(sd)), sqrt(sinS * sin(s2)));
-  phi2 = 2.0 * sphericalCapAtan2(sqrt(sin(s2) * sin(sd)), sqrt(sinS * sin(s1)));
-  float t = tan(0.5 * s) * tan(0.5 * s1) * tan(0.5 * s2) * tan(0.5 * sd);
-  excess = 4.0 * sphericalCapAtan2(sqrt(max(0.0, t)), 1.0);
+  vec3 axis;
+  float radius;
+  float halfSin;
+  float halfCos;
+};
+
+// A cap of radius r in [0, pi].
+sphericalCapCap sphericalCapMakeCap(vec3 axis, float r)
+{
+  float h = sphericalCapSin(0.5 * r);
+  return sphericalCapCap(axis, r, h, sqrt(max(0.0, 1.0 - h * h)));
 }
 
-// Solid angle of the intersection of caps of radii r1, r2 (clamped, not NaN) whose axes are d
-// apart; when the boundary circles cross, also the triangle's angles (crossing = true).
-float sphericalCapLensArea(float r1, float r2, float d,
-  out float phi1, out float phi2, out bool crossing)
+// The spherical triangle (a1, a2, P), P where the two boundary circles cross, for caps c1, c2
+// whose axes are d apart, given the half chord hc = sin(d/2) and half sum hs = cos(d/2): the
+// angles phi1 at a1 and phi2 at a2 (half-angle formulas keep thin triangles accurate), their sines
+// (algebraic, from the half-angle tangents) and the spherical excess, from the smaller radius r, d
+// and the angle phi between them: tan(E/2) = tan(r/2) tan(d/2) sin phi / (1 + tan(r/2) tan(d/2)
+// cos phi). The sines of the half-perimeter s and of s - r1, s - r2, s - d come from the
+// half-angle sines and cosines by the addition formulas, the larger radius meeting d/2 first:
+// with a small cap on the other's rim, that difference is what is left when the small radius is
+// added back.
+void sphericalCapLensTriangle(sphericalCapCap c1, sphericalCapCap c2, float hc, float hs,
+  out float phi1, out float phi2, out float sinPhi1, out float sinPhi2, out float excess)
 {
-  phi1 = 0.0;
-  phi2 = 0.0;
-  crossing = false;
+  bool firstBig = c1.radius >= c2.radius;
+  float hB = firstBig ? c1.halfSin : c2.halfSin;
+  float cB = firstBig ? c1.halfCos : c2.halfCos;
+  float hS = firstBig ? c2.halfSin : c1.halfSin;
+  float cS = firstBig ? c2.halfCos : c1.halfCos;
+  // e = d/2 - rBig/2, f = d/2 + rBig/2, g = (rBig - rSmall)/2.
+  float sinE = hc * cB - hs * hB;
+  float cosE = hs * cB + hc * hB;
+  float sinF = hc * cB + hs * hB;
+  float cosF = hs * cB - hc * hB;
+  float sinG = hB * cS - cB * hS;
+  float cosG = cB * cS + hB * hS;
+  float sinSmall = max(0.0, hS * cosE + cS * sinE);
+  float sinDiff = max(0.0, hS * cosE - cS * sinE);
+  float sinBig = max(0.0, hc * cosG + hs * sinG);
+  float sinS = max(0.0, hS * cosF + cS * sinF);
+  float sin1 = firstBig ? sinSmall : sinBig;
+  float sin2 = firstBig ? sinBig : sinSmall;
+  float y1 = sqrt(sin1 * sinDiff);
+  float x1 = sqrt(sinS * sin2);
+  float y2 = sqrt(sin2 * sinDiff);
+  float x2 = sqrt(sinS * sin1);
+  phi1 = 2.0 * sphericalCapAtan2(y1, x1);
+  phi2 = 2.0 * sphericalCapAtan2(y2, x2);
+  float n1 = x1 * x1 + y1 * y1;
+  float n2 = x2 * x2 + y2 * y2;
+  sinPhi1 = n1 > 0.0 ? 2.0 * x1 * y1 / n1 : 0.0;
+  sinPhi2 = n2 > 0.0 ? 2.0 * x2 * y2 / n2 : 0.0;
+  // The excess from the smaller cap's side: tan(r/2) of the larger one may be huge.
+  float xs = firstBig ? x2 : x1;
+  float ys = firstBig ? y2 : y1;
+  float ns = xs * xs + ys * ys;
+  float sinPhi = firstBig ? sinPhi2 : sinPhi1;
+  float cosPhi = ns > 0.0 ? (xs * xs - ys * ys) / ns : 1.0;
+  float t = hS / cS * (hc / hs);
+  excess = 2.0 * sphericalCapAtan2(t * sinPhi, 1.0 + t * cosPhi);
+}
+
+// How caps of radii r1, r2 with axes d apart meet.
+const int sphericalCapDisjoint = 0;
+const int sphericalCapNested = 1;    // one inside the other
+const int sphericalCapComplements = 2; // the complements are disjoint: the union is the sphere
+const int sphericalCapCrossing = 3;
+
+int sphericalCapLensCase(float r1, float r2, float d)
+{
   float rMin = min(r1, r2);
   if (rMin <= 0.0 || d >= r1 + r2)
   {
-    return 0.0;
+    return sphericalCapDisjoint;
   }
   if (d <= max(r1, r2) - rMin)
   {
-    return sphericalCapArea(rMin);
+    return sphericalCapNested;
   }
-  if (r1 + r2 + d >= 2.0 * sphericalCapPi)
-  {
-    return max(0.0, sphericalCapArea(r1) + sphericalCapArea(r2) - 4.0 * sphericalCapPi);
-  }
-  crossing = true;
-  float excess;
-  sphericalCapLensTriangle(r1, r2, d, phi1, phi2, excess);
-  float h1 = sin(0.5 * r1);
-  float h2 = sin(0.5 * r2);
-  float area = 4.0 * (phi1 * h1 * h1 + phi2 * h2 * h2) - 2.0 * excess;
-  return clamp(area, 0.0, sphericalCapArea(rMin));
+  return r1 + r2 + d >= 2.0 * sphericalCapPi ? sphericalCapComplements : sphericalCapCrossing;
 }
 
-// Area and first moment of the intersection of caps (u1, r1) and (u2, r2), unit axes d apart.
-float sphericalCapLens(vec3 u1, float r1, vec3 u2, float r2, float d, out vec3 moment)
+// Area and first moment of the intersection of caps c1 and c2, which meet as lensCase, their unit
+// axes d apart with half chord hc = sin(d/2) and half sum hs = cos(d/2).
+float sphericalCapLens(
+  int lensCase, sphericalCapCap c1, sphericalCapCap c2, float hc, float hs, out vec3 moment)
 {
   moment = vec3(0.0);
-  float phi1, phi2;
-  bool crossing;
-  float area = sphericalCapLensArea(r1, r2, d, phi1, phi2, crossing);
-  if (area <= 0.0)
+  if (lensCase == sphericalCapDisjoint)
   {
     return 0.0;
   }
-  float s1 = sin(r1);
-  float s2 = sin(r2);
-  if (!crossing && d <= abs(r1 - r2))
+  float h1 = c1.halfSin;
+  float h2 = c2.halfSin;
+  float s1 = 2.0 * h1 * c1.halfCos; // sin r
+  float s2 = 2.0 * h2 * c2.halfCos;
+  vec3 u1 = c1.axis;
+  vec3 u2 = c2.axis;
+  if (lensCase == sphericalCapNested)
   {
-    float s = r1 <= r2 ? s1 : s2;
-    moment = sphericalCapPi * s * s * (r1 <= r2 ? u1 : u2);
-    return area;
+    // The moment of a cap (a, r) is pi sin^2 r a.
+    bool first = c1.radius <= c2.radius;
+    float s = first ? s1 : s2;
+    float h = first ? h1 : h2;
+    moment = sphericalCapPi * s * s * (first ? u1 : u2);
+    return 4.0 * sphericalCapPi * h * h;
   }
-  if (!crossing)
+  if (lensCase == sphericalCapComplements)
   {
     moment = sphericalCapPi * (s1 * s1 * u1 + s2 * s2 * u2);
-    return area;
+    return max(0.0, 4.0 * sphericalCapPi * (h1 * h1 + h2 * h2 - 1.0));
   }
+  // Tovchigrechko & Vakser: A = 2[pi - psi - phi1 cos r1 - phi2 cos r2], rearranged as two
+  // sectors minus the quadrilateral (a1, P, a2, P'): 4 phik sin^2(rk/2) - 2E, without cancellation.
+  float phi1, phi2, sinPhi1, sinPhi2, excess;
+  sphericalCapLensTriangle(c1, c2, hc, hs, phi1, phi2, sinPhi1, sinPhi2, excess);
+  float area = clamp(4.0 * (phi1 * h1 * h1 + phi2 * h2 * h2) - 2.0 * excess, 0.0,
+    4.0 * sphericalCapPi * min(h1 * h1, h2 * h2));
   // The tangents at u1 and u2 toward each other are (delta + k u1)/sin d and (-delta + k u2)/sin d,
   // delta = u2 - u1, k = 1 - cos d; grouping the delta terms keeps nearby small caps accurate.
-  float w1 = s1 * cos(r1) * sin(phi1);
-  float w2 = s2 * cos(r2) * sin(phi2);
-  float sinD = sin(d);
-  vec3 tangents = tan(0.5 * d) * (w1 * u1 + w2 * u2);
+  float w1 = s1 * (1.0 - 2.0 * h1 * h1) * sinPhi1;
+  float w2 = s2 * (1.0 - 2.0 * h2 * h2) * sinPhi2;
+  float sinD = 2.0 * hc * hs;
+  vec3 tangents = (hc / hs) * (w1 * u1 + w2 * u2);
   if (sinD > 0.0)
   {
     tangents += (w1 - w2) / sinD * (u2 - u1);
@@ -157,10 +217,14 @@ float sphericalCapIntersectionArea(float r1, float r2, float d)
   {
     return 0.0;
   }
-  float phi1, phi2;
-  bool crossing;
-  return sphericalCapLensArea(clamp(r1, 0.0, sphericalCapPi), clamp(r2, 0.0, sphericalCapPi),
-    clamp(d, 0.0, sphericalCapPi), phi1, phi2, crossing);
+  r1 = clamp(r1, 0.0, sphericalCapPi);
+  r2 = clamp(r2, 0.0, sphericalCapPi);
+  d = clamp(d, 0.0, sphericalCapPi);
+  // The lens's area does not depend on where its axes are.
+  vec3 moment;
+  return sphericalCapLens(sphericalCapLensCase(r1, r2, d),
+    sphericalCapMakeCap(vec3(0.0, 0.0, 1.0), r1), sphericalCapMakeCap(vec3(sin(d), 0.0, cos(d)), r2),
+    sin(0.5 * d), cos(0.5 * d), moment);
 }
 
 float sphericalCapIntersectionAreaSmoothstep(float r1, float r2, float d)
@@ -201,9 +265,13 @@ vec3 sphericalCapIntersectionMoment(vec3 a1, float r1, vec3 a2, float r2)
   {
     return vec3(0.0);
   }
+  float hc = 0.5 * length(u1 - u2);
+  float hs = 0.5 * length(u1 + u2);
+  r1 = clamp(r1, 0.0, sphericalCapPi);
+  r2 = clamp(r2, 0.0, sphericalCapPi);
   vec3 moment;
-  sphericalCapLens(u1, clamp(r1, 0.0, sphericalCapPi), u2, clamp(r2, 0.0, sphericalCapPi),
-    sphericalCapDistance(u1, u2), moment);
+  sphericalCapLens(sphericalCapLensCase(r1, r2, 2.0 * sphericalCapAtan2(hc, hs)),
+    sphericalCapMakeCap(u1, r1), sphericalCapMakeCap(u2, r2), hc, hs, moment);
   return moment;
 }
 
@@ -298,17 +366,101 @@ const int sphericalCapCentroid = 0;
 const int sphericalCapMoment = 1;
 const float sphericalCapMinimumLightRadius = 1e-4;
 
-// The middle of the overlap of caps (l, rl) and (bent, rp) along the great circle through their
-// axes, d apart: a cheap stand-in for the lens centroid.
-vec3 sphericalCapOverlapMiddle(vec3 l, float rl, vec3 bent, float rp, float d)
+// The middle of the overlap of crossing caps, light and aperture, along the great circle through
+// their axes, which are d apart with half chord hc and half sum hs: a cheap stand-in for the lens
+// centroid. Crossing caps overlap from d - rp to rl along the circle, measured from the light's
+// axis; the middle, t = d/2 - rp/2 + rl/2, comes from the half-angle sines by the addition formulas.
+vec3 sphericalCapOverlapMiddle(sphericalCapCap light, sphericalCapCap aperture, float hc, float hs)
 {
-  float sinD = sin(d);
+  float sinD = 2.0 * hc * hs;
   if (!(sinD > 1e-6))
   {
-    return l;
+    return light.axis;
   }
-  float t = 0.5 * (max(-rl, d - rp) + min(rl, d + rp));
-  return cos(t) * l + sin(t) * (bent - cos(d) * l) / sinD;
+  float sinX = hc * aperture.halfCos - hs * aperture.halfSin; // x = d/2 - rp/2
+  float cosX = hs * aperture.halfCos + hc * aperture.halfSin;
+  float sinT = sinX * light.halfCos + cosX * light.halfSin;
+  float cosT = cosX * light.halfCos - sinX * light.halfSin;
+  float cosD = 1.0 - 2.0 * hc * hc;
+  return cosT * light.axis + sinT * (aperture.axis - cosD * light.axis) / sinD;
+}
+
+// vtkSphericalCap::LightTransfer() and, in coverage, vtkSphericalCap::LightCoverage(), for a unit
+// (or zero) normal un and caps whose radii are clamped (rp <= pi/2, sphericalCapMinimumLightRadius
+// <= rl <= pi/2). Everything derives from the half-angle sines and cosines of the two radii and the
+// half chord between the axes, sin(d/2), which also classifies the caps (cosines near 1 cannot
+// tell nearly equal small caps apart), and only crossing caps, the penumbra, need angles at all.
+// Shaders that prepare their caps once per fragment call this directly.
+float sphericalCapShade(int shading, int lambert, vec3 un, sphericalCapCap aperture,
+  sphericalCapCap light, out float coverage)
+{
+  coverage = 0.0;
+  vec3 ub = aperture.axis;
+  vec3 ul = light.axis;
+  float hp = aperture.halfSin;
+  float cp = aperture.halfCos;
+  float hl = light.halfSin;
+  float cl = light.halfCos;
+  float areaP = 4.0 * sphericalCapPi * hp * hp;
+  float areaL = 4.0 * sphericalCapPi * hl * hl;
+  if (shading == sphericalCapBentNormal)
+  {
+    float open = 2.0 * hp * hp;
+    coverage = open * areaL;
+    return open * max(0.0, dot(ub, ul));
+  }
+
+  // sin((rp + rl)/2) and sin(|rp - rl|/2) by the addition formulas.
+  float halfChord = 0.5 * length(ub - ul);
+  float halfSum = 0.5 * length(ub + ul);
+  float sinHalfSum = hp * cl + cp * hl;
+  bool disjoint = aperture.radius <= 0.0 || halfChord >= sinHalfSum;
+  bool nested = !disjoint && halfChord <= abs(hp * cl - cp * hl);
+  if (shading == sphericalCapSimplified)
+  {
+    // The ramp of sphericalCapSimplifiedShadowFactor: sin((s + d)/2) sin((s - d)/2) over
+    // sin rp sin rl, s = rp + rl, with sin(a + b) sin(a - b) = sin^2 a - sin^2 b.
+    float ramp = (sinHalfSum * sinHalfSum - halfChord * halfChord) / (4.0 * hp * cp * hl * cl);
+    float shadow = disjoint ? 0.0 : min(1.0, areaP / areaL) * (nested ? 1.0 : clamp(ramp, 0.0, 1.0));
+    coverage = shadow * min(areaL, areaP);
+    return shadow * max(0.0, dot(un, ul));
+  }
+  if (disjoint || (shading != sphericalCapExact && shading != sphericalCapSmoothstep))
+  {
+    return 0.0;
+  }
+  // 1/(pi sin^2 rl), sin rl = 2 hl cl.
+  float radiance = 1.0 / (4.0 * sphericalCapPi * hl * hl * cl * cl);
+  if (nested)
+  {
+    // The smaller cap lies in the other: the lens is that cap, its centroid that cap's axis; its
+    // moment is pi sin^2 r times the axis.
+    bool lightInside = light.radius <= aperture.radius;
+    float h = lightInside ? hl : hp;
+    float c = lightInside ? cl : cp;
+    coverage = lightInside ? areaL : areaP;
+    float factor = (shading == sphericalCapExact && lambert == sphericalCapMoment)
+      ? 4.0 * sphericalCapPi * h * h * c * c : coverage;
+    return factor * max(0.0, dot(un, lightInside ? ul : ub)) * radiance;
+  }
+  if (shading == sphericalCapExact)
+  {
+    vec3 m;
+    coverage = sphericalCapLens(sphericalCapCrossing, light, aperture, halfChord, halfSum, m);
+    if (lambert == sphericalCapMoment)
+    {
+      return max(0.0, dot(un, m)) * radiance;
+    }
+    float length = length(m);
+    return length > 0.0 ? coverage * max(0.0, dot(un, m) / length) * radiance : 0.0;
+  }
+  float d = 2.0 * sphericalCapAtan2(halfChord, halfSum);
+  float rp = aperture.radius;
+  float rl = light.radius;
+  float x = 1.0 - (d - abs(rp - rl)) / (2.0 * min(rp, rl));
+  coverage = min(areaP, areaL) * smoothstep(0.0, 1.0, x);
+  return coverage * max(0.0, dot(un, sphericalCapOverlapMiddle(light, aperture, halfChord, halfSum))) *
+    radiance;
 }
 
 // vtkSphericalCap::LightTransfer() and, in coverage, vtkSphericalCap::LightCoverage().
@@ -323,40 +475,19 @@ float sphericalCapLightTransfer(int shading, int lambert, vec3 n, vec3 bent, flo
   {
     return 0.0;
   }
-  rp = clamp(rp, 0.0, 0.5 * sphericalCapPi);
-  rl = clamp(rl, sphericalCapMinimumLightRadius, 0.5 * sphericalCapPi);
-  float d = sphericalCapDistance(ub, ul);
-  float sinL = sin(rl);
-  float radiance = 1.0 / (sphericalCapPi * sinL * sinL);
-  if (shading == sphericalCapExact)
-  {
-    vec3 m;
-    coverage = sphericalCapLens(ul, rl, ub, rp, d, m);
-    if (lambert == sphericalCapMoment)
-    {
-      return max(0.0, dot(un, m)) * radiance;
-    }
-    float length = length(m);
-    return length > 0.0 ? coverage * max(0.0, dot(un, m) / length) * radiance : 0.0;
-  }
-  if (shading == sphericalCapSmoothstep)
-  {
-    coverage = sphericalCapIntersectionAreaSmoothstep(rl, rp, d);
-    return coverage * max(0.0, dot(un, sphericalCapOverlapMiddle(ul, rl, ub, rp, d))) * radiance;
-  }
-  if (shading == sphericalCapSimplified)
-  {
-    float shadow = sphericalCapSimplifiedShadowFactor(rp, rl, d);
-    coverage = shadow * min(sphericalCapArea(rl), sphericalCapArea(rp));
-    return shadow * max(0.0, dot(un, ul));
-  }
-  if (shading == sphericalCapBentNormal)
-  {
-    float open = sphericalCapArea(rp) / (2.0 * sphericalCapPi);
-    coverage = open * sphericalCapArea(rl);
-    return open * max(0.0, dot(ub, ul));
-  }
-  return 0.0;
+  return sphericalCapShade(shading, lambert, un,
+    sphericalCapMakeCap(ub, clamp(rp, 0.0, 0.5 * sphericalCapPi)),
+    sphericalCapMakeCap(ul, clamp(rl, sphericalCapMinimumLightRadius, 0.5 * sphericalCapPi)),
+    coverage);
+}
+
+// vtkSphericalCap::SkyTransfer() for an aperture cap (radius clamped to [0, pi/2]).
+float sphericalCapSkyShade(
+  sphericalCapCap aperture, float covered, float cosNormalBent, bool cosineWeighted)
+{
+  float h = aperture.halfSin;
+  float open = max(0.0, 4.0 * sphericalCapPi * h * h - max(0.0, covered)) / (2.0 * sphericalCapPi);
+  return cosineWeighted ? open * clamp(cosNormalBent, 0.0, 1.0) : open;
 }
 
 // vtkSphericalCap::SkyTransfer().
@@ -366,7 +497,7 @@ float sphericalCapSkyTransfer(float rp, float covered, float cosNormalBent, bool
   {
     return 0.0;
   }
-  rp = clamp(rp, 0.0, 0.5 * sphericalCapPi);
-  float open = max(0.0, sphericalCapArea(rp) - max(0.0, covered)) / (2.0 * sphericalCapPi);
-  return cosineWeighted ? open * clamp(cosNormalBent, 0.0, 1.0) : open;
+  return sphericalCapSkyShade(
+    sphericalCapMakeCap(vec3(0.0), clamp(rp, 0.0, 0.5 * sphericalCapPi)), covered, cosNormalBent,
+    cosineWeighted);
 }

@@ -604,6 +604,26 @@ void TestShading()
       Check(std::abs(t - 0.8) < 1e-4, "sun in an open aperture: n.l", mode, lambert, 0, t, 0.8);
     }
   }
+  // LightTransfer's own ramp for SIMPLIFIED agrees with SimplifiedShadowFactor() times n.l.
+  vtkMath::RandomSeed(3);
+  double worstSimplified = 0.0;
+  for (int i = 0; i < 2000; ++i)
+  {
+    const double rp = vtkMath::Random(0.0, 0.5 * Pi), rl = vtkMath::Random(1e-4, 0.8);
+    const double d = vtkMath::Random(0.0, Pi), tilt = vtkMath::Random(0.0, 1.5);
+    const double bent[3] = { 0.0, 0.0, 1.0 };
+    const double l[3] = { std::sin(d), 0.0, std::cos(d) };
+    const double normal[3] = { 0.0, std::sin(tilt), std::cos(tilt) };
+    const double want =
+      vtkSphericalCap::SimplifiedShadowFactor(rp, rl, d) * std::max(0.0, vtkMath::Dot(normal, l));
+    const double got = vtkSphericalCap::LightTransfer(simple, centroid, normal, bent, rp, l, rl);
+    worstSimplified = std::max(worstSimplified, std::abs(got - want));
+  }
+  std::cout << "SIMPLIFIED transfer vs SimplifiedShadowFactor * n.l: max difference "
+            << worstSimplified << "\n";
+  Check(worstSimplified < 1e-9, "simplified transfer = shadow factor times n.l", 0, 0, 0,
+    worstSimplified, 0);
+
   // The sky fills what the light leaves of the aperture.
   Check(std::abs(vtkSphericalCap::SkyTransfer(0.5 * Pi, 0.0, 1.0, true) - 1.0) < 1e-12,
     "open sky: 1", 0, 0, 0, 0, 1);
