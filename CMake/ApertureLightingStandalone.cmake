@@ -16,7 +16,9 @@ set(_aperture_vtk_components
   vtksys)
 set(_aperture_vtk_test_components
   FiltersGeneral
+  FiltersGeometry
   FiltersSources
+  FiltersTexture
   IOGeometry
   IOXML
   ImagingCore

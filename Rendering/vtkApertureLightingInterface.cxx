@@ -1,0 +1,605 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    vtkApertureLightingInterface.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkApertureLightingInterface.h"
+
+#include "vtkApertureLightingFS.h"
+#include "vtkSphericalCap.h"
+#include "vtkSphericalCapGLSL.h"
+
+#include "vtkActor.h"
+#include "vtkCollectionIterator.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationDoubleKey.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkLightingMapPass.h"
+#include "vtkMath.h"
+#include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLActor.h"
+#include "vtkOpenGLCamera.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+vtkStandardNewMacro(vtkApertureLightingInterface);
+vtkInformationKeyMacro(vtkApertureLightingInterface, LIGHT_RADIUS, Double);
+
+namespace
+{
+// Why an aperture array cannot be used, or an empty string.
+std::string ArrayProblem(vtkDataSet* data, const std::string& name, int components)
+{
+  vtkDataArray* array = data->GetPointData()->GetArray(name.c_str());
+  if (!array)
+  {
+    return "there is no point-data array named '" + name + "'";
+  }
+  if (array->GetNumberOfComponents() != components)
+  {
+    return "'" + name + "' has " + std::to_string(array->GetNumberOfComponents()) +
+      " components instead of " + std::to_string(components);
+  }
+  if (array->GetNumberOfTuples() != data->GetNumberOfPoints())
+  {
+    return "'" + name + "' has " + std::to_string(array->GetNumberOfTuples()) + " tuples for " +
+      std::to_string(data->GetNumberOfPoints()) + " points";
+  }
+  for (vtkIdType i = 0; i < array->GetNumberOfValues(); ++i)
+  {
+    if (!std::isfinite(array->GetComponent(i / components, static_cast<int>(i % components))))
+    {
+      return "'" + name + "' has non-finite values";
+    }
+  }
+  return std::string();
+}
+}
+
+//------------------------------------------------------------------------------
+vtkApertureLightingInterface::vtkApertureLightingInterface()
+{
+  this->ShaderTime.Modified();
+}
+
+//------------------------------------------------------------------------------
+vtkApertureLightingInterface::~vtkApertureLightingInterface()
+{
+  this->SetApertureImage(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingInterface::SetShadingMode(int mode)
+{
+  mode = std::min(std::max(mode, static_cast<int>(EXACT)), static_cast<int>(STANDARD));
+  if (mode != this->ShadingMode)
+  {
+    this->ShadingMode = mode;
+    this->ShaderTime.Modified();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingInterface::SetLambertMode(int mode)
+{
+  mode = std::min(std::max(mode, 0), 1);
+  if (mode != this->LambertMode)
+  {
+    this->LambertMode = mode;
+    this->ShaderTime.Modified();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+const char* vtkApertureLightingInterface::GetShadingModeAsString()
+{
+  static const char* names[] = { "Exact", "Smoothstep", "Simplified", "BentNormal", "Standard" };
+  return names[this->ShadingMode];
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingInterface::SetBentNormalArrayName(const char* name)
+{
+  const std::string value = name ? name : "";
+  if (value != this->BentNormalArrayName)
+  {
+    this->BentNormalArrayName = value;
+    this->CheckedTime = 0;
+    this->ShaderTime.Modified();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingInterface::SetApertureRadiusArrayName(const char* name)
+{
+  const std::string value = name ? name : "";
+  if (value != this->ApertureRadiusArrayName)
+  {
+    this->ApertureRadiusArrayName = value;
+    this->CheckedTime = 0;
+    this->ShaderTime.Modified();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingInterface::SetApertureImage(vtkImageData* image)
+{
+  if (image == this->ApertureImage)
+  {
+    return;
+  }
+  // Switching between per-vertex and per-texel apertures changes the shaders.
+  if (!image != !this->ApertureImage)
+  {
+    this->ShaderTime.Modified();
+  }
+  if (this->ApertureImage)
+  {
+    this->ApertureImage->UnRegister(this);
+  }
+  this->ApertureImage = image;
+  if (image)
+  {
+    image->Register(this);
+  }
+  this->CheckedTime = 0;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingInterface::SetLightRadius(vtkLight* light, double radius)
+{
+  if (light)
+  {
+    light->GetInformation()->Set(LIGHT_RADIUS(), radius);
+    light->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkApertureLightingInterface::GetLightRadius(vtkLight* light)
+{
+  vtkInformation* info = light ? light->GetInformation() : nullptr;
+  return info && info->Has(LIGHT_RADIUS()) ? info->Get(LIGHT_RADIUS()) : -1.0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkApertureLightingInterface::CheckApertures(vtkDataSet* data)
+{
+  std::string problem;
+  return this->CheckApertures(data, problem);
+}
+
+//------------------------------------------------------------------------------
+bool vtkApertureLightingInterface::CheckApertures(vtkDataSet* data, std::string& problem)
+{
+  if (!data)
+  {
+    problem = "there is no input";
+    return false;
+  }
+  vtkPointData* pd = data->GetPointData();
+  vtkDataArray* bent = pd->GetArray(this->BentNormalArrayName.c_str());
+  vtkDataArray* radius = pd->GetArray(this->ApertureRadiusArrayName.c_str());
+  const vtkMTimeType time =
+    std::max({ data->GetMTime(), bent ? bent->GetMTime() : 0, radius ? radius->GetMTime() : 0 });
+  if (bent == this->CheckedArrays[0] && radius == this->CheckedArrays[1] &&
+    time <= this->CheckedTime)
+  {
+    problem = this->CheckedResult ? std::string() : this->LastProblem;
+    return this->CheckedResult;
+  }
+  problem = ArrayProblem(data, this->BentNormalArrayName, 3);
+  if (problem.empty())
+  {
+    problem = ArrayProblem(data, this->ApertureRadiusArrayName, 1);
+  }
+  this->CheckedArrays[0] = bent;
+  this->CheckedArrays[1] = radius;
+  this->CheckedTime = time;
+  this->CheckedResult = problem.empty();
+  if (!problem.empty() && problem != this->LastProblem)
+  {
+    vtkWarningMacro("Cannot shade with apertures: " << problem << "; using standard shading.");
+  }
+  this->LastProblem = problem;
+  return this->CheckedResult;
+}
+
+//------------------------------------------------------------------------------
+bool vtkApertureLightingInterface::ReplaceShaderLight(
+  std::map<vtkShader::Type, vtkShader*>& shaders, vtkActor* actor, vtkRenderer* renderer,
+  int lightComplexity, int lightCount, bool perTexel, bool inputTCoords)
+{
+  vtkInformation* keys = actor->GetPropertyKeys();
+  if (this->ShadingMode == STANDARD || lightComplexity < 1 || lightCount < 1 ||
+    actor->GetProperty()->GetInterpolation() == VTK_PBR ||
+    (keys &&
+      (keys->Has(vtkLightingMapPass::RENDER_NORMALS()) ||
+        keys->Has(vtkLightingMapPass::RENDER_LUMINANCE()))))
+  {
+    return false;
+  }
+
+  std::string vs = shaders[vtkShader::Vertex]->GetSource();
+  std::string gs = shaders[vtkShader::Geometry]->GetSource();
+  std::string fs = shaders[vtkShader::Fragment]->GetSource();
+
+  // Apertures reach the fragment shader as varyings in view coordinates, or as texture
+  // coordinates in the per-texel mode.
+  if (perTexel)
+  {
+    vtkShaderProgram::Substitute(vs, "//VTK::Normal::Dec",
+      std::string("//VTK::Normal::Dec\n") + (inputTCoords ? "in vec2 apertureTCoordMC;\n" : "") +
+        "uniform vec4 apertureTexTransform;\n"
+        "out vec2 apertureUVVSOutput;");
+    vtkShaderProgram::Substitute(vs, "//VTK::Normal::Impl",
+      std::string("//VTK::Normal::Impl\n") + "  apertureUVVSOutput = apertureTexTransform.xy * " +
+        (inputTCoords ? "apertureTCoordMC" : "vertexMC.xy") + " + apertureTexTransform.zw;");
+    vtkShaderProgram::Substitute(gs, "//VTK::Normal::Dec",
+      "//VTK::Normal::Dec\n"
+      "in vec2 apertureUVVSOutput[];\n"
+      "out vec2 apertureUVGSOutput;");
+    vtkShaderProgram::Substitute(gs, "//VTK::Normal::Impl",
+      "//VTK::Normal::Impl\n"
+      "apertureUVGSOutput = apertureUVVSOutput[i];");
+  }
+  else
+  {
+    vtkShaderProgram::Substitute(vs, "//VTK::Normal::Dec",
+      "//VTK::Normal::Dec\n"
+      "in vec3 bentNormalMC;\n"
+      "in float apertureRadiusMC;\n"
+      "uniform mat3 apertureNormalMatrix;\n"
+      "out vec3 bentNormalVCVSOutput;\n"
+      "out float apertureRadiusVSOutput;");
+    vtkShaderProgram::Substitute(vs, "//VTK::Normal::Impl",
+      "//VTK::Normal::Impl\n"
+      "  bentNormalVCVSOutput = apertureNormalMatrix * bentNormalMC;\n"
+      "  apertureRadiusVSOutput = apertureRadiusMC;");
+    vtkShaderProgram::Substitute(gs, "//VTK::Normal::Dec",
+      "//VTK::Normal::Dec\n"
+      "in vec3 bentNormalVCVSOutput[];\n"
+      "in float apertureRadiusVSOutput[];\n"
+      "out vec3 bentNormalVCGSOutput;\n"
+      "out float apertureRadiusGSOutput;");
+    vtkShaderProgram::Substitute(gs, "//VTK::Normal::Impl",
+      "//VTK::Normal::Impl\n"
+      "bentNormalVCGSOutput = bentNormalVCVSOutput[i];\n"
+      "apertureRadiusGSOutput = apertureRadiusVSOutput[i];");
+  }
+
+  std::ostringstream dec;
+  dec << static_cast<vtkOpenGLRenderer*>(renderer)->GetLightingUniforms() << "\n"
+      << "#define APERTURE_SHADING " << this->ShadingMode << "\n"
+      << "#define APERTURE_LAMBERT " << this->LambertMode << "\n"
+      << vtkSphericalCapGLSL << "\n"
+      << vtkApertureLightingFS << "\n"
+      << "uniform vec3 apertureSkyColor;\n"
+      << "uniform int apertureSkyCosine;\n";
+  if (perTexel)
+  {
+    dec << "uniform sampler2D apertureTexture;\n"
+           "uniform mat3 apertureNormalMatrix;\n"
+           "in vec2 apertureUVVSOutput;\n";
+  }
+  else
+  {
+    dec << "in vec3 bentNormalVCVSOutput;\n"
+           "in float apertureRadiusVSOutput;\n";
+  }
+  for (int i = 0; i < lightCount; ++i)
+  {
+    dec << "uniform vec3 apertureLightCap" << i << ";\n";
+    if (lightComplexity >= 3)
+    {
+      dec << "uniform float lightWorldRadius" << i << ";\n";
+    }
+  }
+  dec << "//VTK::Light::Dec\n";
+  vtkShaderProgram::Substitute(fs, "//VTK::Light::Dec", dec.str());
+
+  std::ostringstream impl;
+  if (perTexel)
+  {
+    impl << "  vec4 apertureSample = texture(apertureTexture, apertureUVVSOutput);\n"
+            "  vec3 apertureBent = apertureNormalMatrix * apertureSample.xyz;\n"
+            "  float apertureRadius = apertureSample.w;\n";
+  }
+  else
+  {
+    impl << "  vec3 apertureBent = bentNormalVCVSOutput;\n"
+            "  float apertureRadius = apertureRadiusVSOutput;\n";
+  }
+  // Back faces see the aperture mirrored, as their normal is; interpolation may shorten the
+  // bent normal to nothing, where the normal stands in.
+  // Back faces see the aperture mirrored, as their normal is.
+  impl << "  if (gl_FrontFacing == false) { apertureBent = -apertureBent; }\n"
+          "  sphericalCapCap aperture = apertureCap(apertureBent, apertureRadius, "
+          "normalVCVSOutput);\n"
+          "  vec3 apertureView = normalize(-vertexVC.xyz);\n"
+          "  vec3 diffuse = vec3(0.0);\n"
+          "  vec3 specular = vec3(0.0);\n"
+          "  float apertureCovered = 0.0;\n";
+  for (int i = 0; i < lightCount; ++i)
+  {
+    // apertureLightCapN holds the radius of a light's cap and the sine and cosine of its half.
+    const std::string cap = "apertureLightCap" + std::to_string(i);
+    if (lightComplexity == 1)
+    {
+      // The headlight shines along the view direction.
+      impl << "  apertureAddLight(normalVCVSOutput, aperture, sphericalCapCap(vec3(0.0, 0.0, 1.0), "
+           << cap << ".x, " << cap << ".y, " << cap
+           << ".z), lightColor0, apertureView, specularPower, true, diffuse, specular, "
+              "apertureCovered);\n";
+    }
+    else if (lightComplexity == 2)
+    {
+      impl << "  apertureAddLight(normalVCVSOutput, aperture, sphericalCapCap(-lightDirectionVC"
+           << i << ", " << cap << ".x, " << cap << ".y, " << cap << ".z), lightColor" << i
+           << ", apertureView, specularPower, false, diffuse, specular, apertureCovered);\n";
+    }
+    else
+    {
+      // Positional lights: VTK's attenuation and spot cone; a world-space radius gives the cap
+      // asin(R/D) at this fragment.
+      const std::string n = std::to_string(i);
+      impl << "  {\n"
+              "    sphericalCapCap light = sphericalCapCap(-lightDirectionVC"
+           << n << ", " << cap << ".x, " << cap << ".y, " << cap << ".z);\n"
+           << "    float attenuation = 1.0;\n"
+              "    if (lightPositional"
+           << n
+           << " != 0)\n"
+              "    {\n"
+              "      vec3 toLight = lightPositionVC"
+           << n
+           << " - vertexVC.xyz;\n"
+              "      float distanceVC = length(toLight);\n"
+              "      light.axis = toLight / distanceVC;\n"
+              "      if (lightWorldRadius"
+           << n
+           << " > 0.0)\n"
+              "      {\n"
+              "        light = apertureSphereLightCap(light.axis, lightWorldRadius"
+           << n
+           << ", distanceVC);\n"
+              "      }\n"
+              "      attenuation = 1.0 / (lightAttenuation"
+           << n << ".x + lightAttenuation" << n << ".y * distanceVC + lightAttenuation" << n
+           << ".z * distanceVC * distanceVC);\n"
+              "      if (lightConeAngle"
+           << n
+           << " < 90.0)\n"
+              "      {\n"
+              "        float coneDot = dot(-light.axis, lightDirectionVC"
+           << n
+           << ");\n"
+              "        attenuation *= coneDot >= cos(radians(lightConeAngle"
+           << n << "))\n          ? pow(coneDot, lightExponent" << n
+           << ") : 0.0;\n"
+              "      }\n"
+              "    }\n"
+              "    apertureAddLight(normalVCVSOutput, aperture, light, attenuation * lightColor"
+           << n
+           << ", apertureView, specularPower, false, diffuse, specular, apertureCovered);\n"
+              "  }\n";
+    }
+  }
+  impl << "  if (aperture.radius >= 0.0)\n"
+          "  {\n"
+          "    diffuse += apertureSkyColor * sphericalCapSkyShade(aperture, apertureCovered, "
+          "dot(normalVCVSOutput, aperture.axis), apertureSkyCosine != 0);\n"
+          "  }\n"
+          "  diffuse = diffuse * diffuseColor;\n"
+          "  specular = specular * specularColor;\n"
+          "  gl_FragData[0] = vec4(ambientColor + diffuse + specular, opacity);\n"
+          "  //VTK::Light::Impl\n";
+  vtkShaderProgram::Substitute(fs, "//VTK::Light::Impl", impl.str(), false);
+
+  shaders[vtkShader::Vertex]->SetSource(vs);
+  shaders[vtkShader::Geometry]->SetSource(gs);
+  shaders[vtkShader::Fragment]->SetSource(fs);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingInterface::ComputeNormalMatrix(
+  vtkRenderer* renderer, vtkActor* actor, vtkMatrix3x3* result)
+{
+  vtkMatrix4x4 *wcvc, *vcdc, *wcdc;
+  vtkMatrix3x3* norms;
+  static_cast<vtkOpenGLCamera*>(renderer->GetActiveCamera())
+    ->GetKeyMatrices(renderer, wcvc, norms, vcdc, wcdc);
+  if (actor->GetIsIdentity())
+  {
+    result->DeepCopy(norms);
+    return;
+  }
+  vtkMatrix4x4* mcwc;
+  vtkMatrix3x3* anorms;
+  static_cast<vtkOpenGLActor*>(actor)->GetKeyMatrices(mcwc, anorms);
+  vtkMatrix3x3::Multiply3x3(anorms, norms, result);
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingInterface::SetShaderParameters(vtkShaderProgram* program,
+  vtkRenderer* renderer, vtkMatrix3x3* normalMatrix, bool inputTCoords, const double shift[3],
+  const double scale[3])
+{
+  if (program->IsUniformUsed("apertureNormalMatrix"))
+  {
+    program->SetUniformMatrix("apertureNormalMatrix", normalMatrix);
+  }
+  if (program->IsUniformUsed("apertureSkyColor"))
+  {
+    const float sky[3] = { static_cast<float>(this->SkyColor[0] * this->SkyIntensity),
+      static_cast<float>(this->SkyColor[1] * this->SkyIntensity),
+      static_cast<float>(this->SkyColor[2] * this->SkyIntensity) };
+    program->SetUniform3f("apertureSkyColor", sky);
+  }
+  if (program->IsUniformUsed("apertureSkyCosine"))
+  {
+    program->SetUniformi("apertureSkyCosine", this->SkyCosineWeighting ? 1 : 0);
+  }
+
+  // Light sizes, in the order the renderer numbers its switched-on lights.
+  vtkLightCollection* lights = renderer->GetLights();
+  vtkCollectionSimpleIterator it;
+  int index = 0;
+  lights->InitTraversal(it);
+  while (vtkLight* light = lights->GetNextLight(it))
+  {
+    if (light->GetSwitch() <= 0)
+    {
+      continue;
+    }
+    const double radius = GetLightRadius(light);
+    const bool world = light->GetPositional() && radius >= 0.0;
+    const std::string capName = "apertureLightCap" + std::to_string(index);
+    const std::string worldName = "lightWorldRadius" + std::to_string(index);
+    if (program->IsUniformUsed(capName.c_str()))
+    {
+      // The angular radius as the shading functions clamp it, with the sine and cosine of its half
+      // computed here once rather than per fragment.
+      const double r =
+        std::min(std::max(radius >= 0.0 && !world ? radius : this->DefaultLightRadius,
+                   vtkSphericalCap::MinimumLightRadius),
+          0.5 * vtkMath::Pi());
+      const float cap[3] = { static_cast<float>(r), static_cast<float>(std::sin(0.5 * r)),
+        static_cast<float>(std::cos(0.5 * r)) };
+      program->SetUniform3f(capName.c_str(), cap);
+    }
+    if (program->IsUniformUsed(worldName.c_str()))
+    {
+      program->SetUniformf(worldName.c_str(), static_cast<float>(world ? radius : -1.0));
+    }
+    ++index;
+  }
+
+  if (program->IsUniformUsed("apertureTexture") && this->ApertureImage)
+  {
+    this->UploadTexture(renderer);
+    this->Texture->Activate();
+    program->SetUniformi("apertureTexture", this->Texture->GetTextureUnit());
+    // Texel centres hold the grid points: u = (s + 1/2)/n for grid coordinate s, and
+    // s = (x - origin)/spacing for x = vertexMC/scale + shift.
+    int dims[3];
+    this->ApertureImage->GetDimensions(dims);
+    const double* spacing = this->ApertureImage->GetSpacing();
+    const double* origin = this->ApertureImage->GetOrigin();
+    float transform[4];
+    for (int k = 0; k < 2; ++k)
+    {
+      const double n = dims[k];
+      if (inputTCoords)
+      {
+        transform[k] = static_cast<float>((n - 1.0) / n);
+        transform[k + 2] = static_cast<float>(0.5 / n);
+      }
+      else
+      {
+        transform[k] = static_cast<float>(1.0 / (spacing[k] * n * scale[k]));
+        transform[k + 2] = static_cast<float>((0.5 + (shift[k] - origin[k]) / spacing[k]) / n);
+      }
+    }
+    program->SetUniform4f("apertureTexTransform", transform);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingInterface::UploadTexture(vtkRenderer* renderer)
+{
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  if (this->Texture && this->TextureTime > this->ApertureImage->GetMTime() &&
+    this->Texture->GetContext() == window)
+  {
+    return;
+  }
+  int dims[3];
+  this->ApertureImage->GetDimensions(dims);
+  vtkPointData* pd = this->ApertureImage->GetPointData();
+  vtkDataArray* bent = pd->GetArray(this->BentNormalArrayName.c_str());
+  vtkDataArray* radius = pd->GetArray(this->ApertureRadiusArrayName.c_str());
+  const vtkIdType n = static_cast<vtkIdType>(dims[0]) * dims[1];
+  std::vector<float> texels(4 * n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      texels[4 * i + k] = static_cast<float>(bent->GetComponent(i, k));
+    }
+    texels[4 * i + 3] = static_cast<float>(radius->GetComponent(i, 0));
+  }
+  if (!this->Texture)
+  {
+    this->Texture = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  this->Texture->SetContext(window);
+  this->Texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  this->Texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  this->Texture->SetMinificationFilter(vtkTextureObject::Linear);
+  this->Texture->SetMagnificationFilter(vtkTextureObject::Linear);
+  this->Texture->Create2DFromRaw(dims[0], dims[1], 4, VTK_FLOAT, texels.data());
+  this->TextureTime.Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingInterface::DeactivateTexture()
+{
+  if (this->Texture)
+  {
+    this->Texture->Deactivate();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingInterface::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (this->Texture)
+  {
+    this->Texture->ReleaseGraphicsResources(window);
+    this->Texture = nullptr;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingInterface::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ShadingMode: " << this->GetShadingModeAsString() << "\n";
+  os << indent << "LambertMode: " << (this->LambertMode ? "Moment" : "Centroid") << "\n";
+  os << indent << "BentNormalArrayName: " << this->BentNormalArrayName << "\n";
+  os << indent << "ApertureRadiusArrayName: " << this->ApertureRadiusArrayName << "\n";
+  os << indent << "SkyColor: " << this->SkyColor[0] << ", " << this->SkyColor[1] << ", "
+     << this->SkyColor[2] << "\n";
+  os << indent << "SkyIntensity: " << this->SkyIntensity << "\n";
+  os << indent << "SkyCosineWeighting: " << this->SkyCosineWeighting << "\n";
+  os << indent << "DefaultLightRadius: " << this->DefaultLightRadius << "\n";
+  os << indent << "ApertureImage: " << this->ApertureImage << "\n";
+}

@@ -1,0 +1,252 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    vtkApertureLightingInterface.h
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+/**
+ * @class   vtkApertureLightingInterface
+ * @brief   settings and shader code of ambient aperture lighting, shared by its mappers
+ *
+ * Holds what vtkApertureLightingMapper and vtkCompositeApertureLightingMapper shade with, and
+ * writes their lighting code, in the way vtkSurfaceLICInterface serves the surface LIC mappers:
+ * the shading model, the names of the aperture arrays, the sky, the default size of lights, and
+ * for the per-texel mode the aperture image.
+ *
+ * Lights are the renderer's own VTK lights, with their intensity, colour, attenuation and cone;
+ * headlights and light kits work unchanged. Each light is a cap: a directional light's size is
+ * its angular radius, a positional light's size is a world-space radius whose cap, asin(R/D), is
+ * computed per fragment. The size travels on the light (SetLightRadius()), as VTK's ray-tracing
+ * backend does; lights without one use DefaultLightRadius as an angular radius (the sun's 0.0047
+ * rad). The light's diffuse term is vtkSphericalCap::LightTransfer() of the chosen model, so an
+ * unoccluded light of intensity I gives the irradiance of VTK's own lighting with that light.
+ * Specular highlights are dimmed by the part of the light the point sees. The sky adds
+ * SkyColor × SkyIntensity × vtkSphericalCap::SkyTransfer(): the part of the aperture the lights
+ * leave uncovered (paper §3.3), so occluded crevices stay dark.
+ *
+ * Scalar colouring, lookup tables, textures and the vtkProperty's ambient, diffuse and specular
+ * coefficients apply as in VTK. PBR interpolation, lighting off, and points drawn as spheres or
+ * lines as tubes are drawn by VTK's standard shading.
+ *
+ * When the aperture arrays are missing or malformed (wrong component count, wrong size, NaN or
+ * infinite values), the mappers warn once and fall back to standard shading: never black.
+ * A negative ApertureRadius marks a point without an aperture, shaded by standard lighting
+ * (vtkCompositeApertureLightingMapper gives it to the points of blocks without usable arrays).
+ *
+ * @sa vtkApertureLightingMapper vtkCompositeApertureLightingMapper vtkSphericalCap
+ */
+
+#ifndef vtkApertureLightingInterface_h
+#define vtkApertureLightingInterface_h
+
+#include "vtkApertureLightingModule.h" // For export macro
+#include "vtkObject.h"
+#include "vtkShader.h"       // For vtkShader::Type
+#include "vtkSmartPointer.h" // For vtkSmartPointer
+
+#include <map>    // For std::map
+#include <string> // For std::string
+
+class vtkActor;
+class vtkDataArray;
+class vtkDataSet;
+class vtkImageData;
+class vtkInformationDoubleKey;
+class vtkLight;
+class vtkMatrix3x3;
+class vtkPolyData;
+class vtkRenderer;
+class vtkShaderProgram;
+class vtkTextureObject;
+class vtkWindow;
+
+class VTKAPERTURELIGHTING_EXPORT vtkApertureLightingInterface : public vtkObject
+{
+public:
+  static vtkApertureLightingInterface* New();
+  vtkTypeMacro(vtkApertureLightingInterface, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Shading models: the first four are vtkSphericalCap's; STANDARD is VTK's own lighting.
+   */
+  enum ShadingModes
+  {
+    EXACT = 0,
+    SMOOTHSTEP = 1,
+    SIMPLIFIED = 2,
+    BENT_NORMAL = 3,
+    STANDARD = 4
+  };
+
+  ///@{
+  /**
+   * The shading model. Default EXACT. Changing it rebuilds the shaders.
+   */
+  virtual void SetShadingMode(int mode);
+  vtkGetMacro(ShadingMode, int);
+  void SetShadingModeToExact() { this->SetShadingMode(EXACT); }
+  void SetShadingModeToSmoothstep() { this->SetShadingMode(SMOOTHSTEP); }
+  void SetShadingModeToSimplified() { this->SetShadingMode(SIMPLIFIED); }
+  void SetShadingModeToBentNormal() { this->SetShadingMode(BENT_NORMAL); }
+  void SetShadingModeToStandard() { this->SetShadingMode(STANDARD); }
+  const char* GetShadingModeAsString();
+  ///@}
+
+  ///@{
+  /**
+   * Lambert factor of the EXACT model: vtkSphericalCap::CENTROID (default, the paper's) or
+   * vtkSphericalCap::MOMENT (exact for lights above the horizon).
+   */
+  virtual void SetLambertMode(int mode);
+  vtkGetMacro(LambertMode, int);
+  void SetLambertModeToCentroid() { this->SetLambertMode(0); }
+  void SetLambertModeToMoment() { this->SetLambertMode(1); }
+  ///@}
+
+  ///@{
+  /**
+   * Point-data arrays with the apertures. Defaults: "BentNormal" and "ApertureRadius".
+   */
+  void SetBentNormalArrayName(const char* name);
+  vtkGetCharFromStdStringMacro(BentNormalArrayName);
+  void SetApertureRadiusArrayName(const char* name);
+  vtkGetCharFromStdStringMacro(ApertureRadiusArrayName);
+  ///@}
+
+  ///@{
+  /**
+   * Sky: colour and intensity of a uniform sky that fills the part of each aperture the lights
+   * do not cover. An open aperture under a sky of intensity s gets s × SkyColor on top of its
+   * lights. Defaults: white, intensity 0 (no sky).
+   */
+  vtkSetVector3Macro(SkyColor, double);
+  vtkGetVector3Macro(SkyColor, double);
+  vtkSetClampMacro(SkyIntensity, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(SkyIntensity, double);
+  ///@}
+
+  ///@{
+  /**
+   * Weight the sky by the cosine between the normal and the bent normal. Default on.
+   */
+  vtkSetMacro(SkyCosineWeighting, bool);
+  vtkGetMacro(SkyCosineWeighting, bool);
+  vtkBooleanMacro(SkyCosineWeighting, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Angular radius (rad) of lights that carry no radius. Default 0.0047, the sun's.
+   */
+  vtkSetClampMacro(DefaultLightRadius, double, 0.0, 1.5707963267948966);
+  vtkGetMacro(DefaultLightRadius, double);
+  ///@}
+
+  ///@{
+  /**
+   * Per-texel mode: a 2D grid from vtkAperturePrecompute's height-field mode whose point data
+   * hold the aperture arrays; the mapper then reads apertures from it as a texture instead of
+   * from vertex attributes. Texture coordinates are the input's point texture coordinates when
+   * it has them (0..1 from the first to the last grid point), otherwise they are generated from
+   * the x and y model coordinates, which suits surfaces made from the grid (vtkWarpScalar,
+   * vtkImageDataGeometryFilter). Set nullptr for the per-vertex mode (default).
+   */
+  void SetApertureImage(vtkImageData* image);
+  vtkGetObjectMacro(ApertureImage, vtkImageData);
+  ///@}
+
+  ///@{
+  /**
+   * The size of a light, stored on the light itself (in its vtkInformation): the angular radius
+   * in radians of a directional light, the world-space radius of a positional one.
+   * GetLightRadius() returns -1 for a light that carries none.
+   */
+  static vtkInformationDoubleKey* LIGHT_RADIUS();
+  static void SetLightRadius(vtkLight* light, double radius);
+  static double GetLightRadius(vtkLight* light);
+  ///@}
+
+  /**
+   * Time of the last change that needs new shaders (model, arrays, per-texel mode).
+   */
+  vtkMTimeType GetShaderMTime() const { return this->ShaderTime.GetMTime(); }
+
+  ///@{
+  /**
+   * For the mappers. CheckApertures() tells whether a dataset's aperture arrays (the image's, in
+   * per-texel mode) can be shaded with, and warns once about each new problem. The result is
+   * cached on the arrays' modification times.
+   */
+  bool CheckApertures(vtkDataSet* data);
+  bool CheckApertures(vtkDataSet* data, std::string& problem);
+  ///@}
+
+  /**
+   * For the mappers: writes the aperture lighting code into the shaders, or returns false where
+   * standard shading applies (STANDARD, lighting off, PBR, the lighting-map pass keys).
+   * perTexel selects texture lookups; inputTCoords whether their coordinates come from the
+   * input's texture coordinates.
+   */
+  bool ReplaceShaderLight(std::map<vtkShader::Type, vtkShader*>& shaders, vtkActor* actor,
+    vtkRenderer* renderer, int lightComplexity, int lightCount, bool perTexel, bool inputTCoords);
+
+  /**
+   * For the mappers: sets the uniforms the lighting code uses (light radii, sky, the aperture
+   * texture and its coordinates). normalMatrix is the mapper's model-to-view normal matrix;
+   * shift and scale are those of its point coordinates in the vertex buffer (the shader's
+   * vertexMC is (x - shift) * scale), which generated texture coordinates undo.
+   */
+  void SetShaderParameters(vtkShaderProgram* program, vtkRenderer* renderer,
+    vtkMatrix3x3* normalMatrix, bool inputTCoords, const double shift[3], const double scale[3]);
+
+  /**
+   * For the mappers: the model-to-view normal matrix of an actor, as vtkOpenGLPolyDataMapper
+   * computes its normalMatrix uniform.
+   */
+  static void ComputeNormalMatrix(vtkRenderer* renderer, vtkActor* actor, vtkMatrix3x3* result);
+
+  /**
+   * For the mappers: after drawing, releases the texture unit of the per-texel mode.
+   */
+  void DeactivateTexture();
+
+  /**
+   * Releases the per-texel texture.
+   */
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+protected:
+  vtkApertureLightingInterface();
+  ~vtkApertureLightingInterface() override;
+
+  int ShadingMode = EXACT;
+  int LambertMode = 0;
+  std::string BentNormalArrayName = "BentNormal";
+  std::string ApertureRadiusArrayName = "ApertureRadius";
+  double SkyColor[3] = { 1.0, 1.0, 1.0 };
+  double SkyIntensity = 0.0;
+  bool SkyCosineWeighting = true;
+  double DefaultLightRadius = 0.0047;
+  vtkImageData* ApertureImage = nullptr;
+
+private:
+  vtkApertureLightingInterface(const vtkApertureLightingInterface&) = delete;
+  void operator=(const vtkApertureLightingInterface&) = delete;
+
+  void UploadTexture(vtkRenderer* renderer);
+
+  vtkTimeStamp ShaderTime;
+  vtkSmartPointer<vtkTextureObject> Texture;
+  vtkTimeStamp TextureTime;
+  std::string LastProblem;
+  vtkDataArray* CheckedArrays[2] = { nullptr, nullptr };
+  vtkMTimeType CheckedTime = 0;
+  bool CheckedResult = false;
+};
+
+#endif

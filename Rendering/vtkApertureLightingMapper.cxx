@@ -1,0 +1,162 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    vtkApertureLightingMapper.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkApertureLightingMapper.h"
+
+#include "vtkActor.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkMatrix3x3.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLHelper.h"
+#include "vtkOpenGLVertexBufferObject.h"
+#include "vtkOpenGLVertexBufferObjectGroup.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+
+#include <string>
+
+vtkStandardNewMacro(vtkApertureLightingMapper);
+
+namespace
+{
+// What a render shades with.
+enum StateBits
+{
+  Apertures = 1,    // apertures are usable and the model is not standard
+  PerTexel = 2,     // read from the aperture image
+  InputTCoords = 4, // with the input's texture coordinates
+};
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingMapper::RenderPiece(vtkRenderer* renderer, vtkActor* actor)
+{
+  vtkPolyData* input = this->GetInput();
+  int state = 0;
+  if (input && this->Lighting->GetShadingMode() != vtkApertureLightingInterface::STANDARD)
+  {
+    vtkImageData* image = this->Lighting->GetApertureImage();
+    vtkDataArray* tcoords = input->GetPointData()->GetTCoords();
+    const bool inputTCoords =
+      image && tcoords && tcoords->GetNumberOfComponents() == 2 && tcoords->GetName();
+    if (this->Lighting->CheckApertures(image ? static_cast<vtkDataSet*>(image) : input))
+    {
+      state = Apertures | (image ? PerTexel : 0) | (inputTCoords ? InputTCoords : 0);
+    }
+  }
+  this->State = state;
+  this->MapApertureAttributes(input);
+  this->Superclass::RenderPiece(renderer, actor);
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingMapper::MapApertureAttributes(vtkPolyData* input)
+{
+  const bool perVertex = (this->State & Apertures) && !(this->State & PerTexel);
+  const std::pair<const char*, std::string> wanted[] = {
+    { "bentNormalMC", perVertex ? this->Lighting->GetBentNormalArrayName() : "" },
+    { "apertureRadiusMC", perVertex ? this->Lighting->GetApertureRadiusArrayName() : "" },
+    { "apertureTCoordMC",
+      (this->State & InputTCoords) ? input->GetPointData()->GetTCoords()->GetName() : "" },
+  };
+  for (const auto& attribute : wanted)
+  {
+    // Mapping modifies the mapper (and so rebuilds its buffers): only on change.
+    auto current = this->ExtraAttributes.find(attribute.first);
+    const std::string mapped =
+      current == this->ExtraAttributes.end() ? "" : current->second.DataArrayName;
+    if (mapped == attribute.second)
+    {
+      continue;
+    }
+    if (attribute.second.empty())
+    {
+      this->RemoveVertexAttributeMapping(attribute.first);
+    }
+    else
+    {
+      this->MapDataArrayToVertexAttribute(
+        attribute.first, attribute.second.c_str(), vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkApertureLightingMapper::GetNeedToRebuildShaders(
+  vtkOpenGLHelper& cellBO, vtkRenderer* renderer, vtkActor* actor)
+{
+  // The superclass first: it also records the light complexity.
+  const bool rebuild = this->Superclass::GetNeedToRebuildShaders(cellBO, renderer, actor);
+  int& last = this->ShaderState[&cellBO];
+  const bool changed = last != this->State;
+  last = this->State;
+  return rebuild || changed || cellBO.ShaderSourceTime < this->Lighting->GetShaderMTime();
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingMapper::ReplaceShaderLight(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* renderer, vtkActor* actor)
+{
+  const auto& info = this->PrimitiveInfo[this->LastBoundBO];
+  if (!(this->State & Apertures) || this->DrawingTubesOrSpheres(*this->LastBoundBO, actor) ||
+    !this->Lighting->ReplaceShaderLight(shaders, actor, renderer, info.LastLightComplexity,
+      info.LastLightCount, (this->State & PerTexel) != 0, (this->State & InputTCoords) != 0))
+  {
+    this->Superclass::ReplaceShaderLight(shaders, renderer, actor);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingMapper::SetMapperShaderParameters(
+  vtkOpenGLHelper& cellBO, vtkRenderer* renderer, vtkActor* actor)
+{
+  this->Superclass::SetMapperShaderParameters(cellBO, renderer, actor);
+  if (this->State & Apertures)
+  {
+    vtkNew<vtkMatrix3x3> normalMatrix;
+    vtkApertureLightingInterface::ComputeNormalMatrix(renderer, actor, normalMatrix);
+    double shift[3] = { 0.0, 0.0, 0.0 }, scale[3] = { 1.0, 1.0, 1.0 };
+    vtkOpenGLVertexBufferObject* points = this->VBOs->GetVBO("vertexMC");
+    if (points && points->GetCoordShiftAndScaleEnabled())
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        shift[k] = points->GetShift()[k];
+        scale[k] = points->GetScale()[k];
+      }
+    }
+    this->Lighting->SetShaderParameters(
+      cellBO.Program, renderer, normalMatrix, (this->State & InputTCoords) != 0, shift, scale);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingMapper::RenderPieceFinish(vtkRenderer* renderer, vtkActor* actor)
+{
+  this->Lighting->DeactivateTexture();
+  this->Superclass::RenderPieceFinish(renderer, actor);
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->Lighting->ReleaseGraphicsResources(window);
+  this->ShaderState.clear();
+  this->Superclass::ReleaseGraphicsResources(window);
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ApertureLighting:\n";
+  this->Lighting->PrintSelf(os, indent.GetNextIndent());
+}

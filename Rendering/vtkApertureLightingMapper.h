@@ -1,0 +1,165 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    vtkApertureLightingMapper.h
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+/**
+ * @class   vtkApertureLightingMapper
+ * @brief   shades polydata with ambient aperture lighting from dynamic area lights
+ *
+ * The render-time half of ambient aperture lighting (Oat & Sander 2007): a polydata mapper whose
+ * fragment shader intersects each point's visibility cap (the `BentNormal` and `ApertureRadius`
+ * arrays of vtkAperturePrecompute) with the cap of every light of the renderer, in one pass.
+ * Directional lights are suns with an angular radius, positional lights sphere lights with a
+ * world-space radius (SetLightRadius()); several lights at once, and a sky that fills the part
+ * of each aperture the lights leave uncovered.
+ *
+ * Shading models, switchable at run time: exact intersection area (with the paper's centroid
+ * Lambert factor, or the exact lens moment), the paper's smoothstep approximation, the 2006 demo's
+ * simplified variant, bent normal only, and VTK's standard lighting. For an unoccluded point
+ * a light of intensity I gives the same irradiance as in VTK's own lighting, so the models and
+ * standard shading stay comparable.
+ *
+ * Apertures come per vertex (vertex attributes from point data) or, in the per-texel mode, from
+ * the grid of vtkAperturePrecompute's height-field output as a texture (SetApertureImage()).
+ * The settings live in a vtkApertureLightingInterface (GetApertureLighting()), shared with
+ * vtkCompositeApertureLightingMapper; the setters here forward to it. Shaders are rebuilt only
+ * when the model, the arrays or the set of lights changes. Missing or malformed arrays give one
+ * warning and standard shading.
+ *
+ * @sa vtkAperturePrecompute vtkApertureLightingInterface vtkCompositeApertureLightingMapper
+ */
+
+#ifndef vtkApertureLightingMapper_h
+#define vtkApertureLightingMapper_h
+
+#include "vtkApertureLightingInterface.h" // For the forwarded settings
+#include "vtkApertureLightingModule.h"    // For export macro
+#include "vtkNew.h"                       // For vtkNew
+#include "vtkOpenGLPolyDataMapper.h"
+
+#include <map> // For std::map
+
+class VTKAPERTURELIGHTING_EXPORT vtkApertureLightingMapper : public vtkOpenGLPolyDataMapper
+{
+public:
+  static vtkApertureLightingMapper* New();
+  vtkTypeMacro(vtkApertureLightingMapper, vtkOpenGLPolyDataMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * All settings of the aperture lighting.
+   */
+  vtkApertureLightingInterface* GetApertureLighting() { return this->Lighting; }
+
+  ///@{
+  /**
+   * Shading model (see vtkApertureLightingInterface). Default Exact.
+   */
+  void SetShadingMode(int mode) { this->Lighting->SetShadingMode(mode); }
+  int GetShadingMode() { return this->Lighting->GetShadingMode(); }
+  void SetShadingModeToExact() { this->Lighting->SetShadingModeToExact(); }
+  void SetShadingModeToSmoothstep() { this->Lighting->SetShadingModeToSmoothstep(); }
+  void SetShadingModeToSimplified() { this->Lighting->SetShadingModeToSimplified(); }
+  void SetShadingModeToBentNormal() { this->Lighting->SetShadingModeToBentNormal(); }
+  void SetShadingModeToStandard() { this->Lighting->SetShadingModeToStandard(); }
+  ///@}
+
+  ///@{
+  /**
+   * Lambert factor of the exact model: the paper's centroid (default) or the exact lens moment.
+   */
+  void SetLambertModeToCentroid() { this->Lighting->SetLambertModeToCentroid(); }
+  void SetLambertModeToMoment() { this->Lighting->SetLambertModeToMoment(); }
+  int GetLambertMode() { return this->Lighting->GetLambertMode(); }
+  ///@}
+
+  ///@{
+  /**
+   * Names of the aperture arrays. Defaults: "BentNormal", "ApertureRadius".
+   */
+  void SetBentNormalArrayName(const char* name) { this->Lighting->SetBentNormalArrayName(name); }
+  const char* GetBentNormalArrayName() { return this->Lighting->GetBentNormalArrayName(); }
+  void SetApertureRadiusArrayName(const char* name)
+  {
+    this->Lighting->SetApertureRadiusArrayName(name);
+  }
+  const char* GetApertureRadiusArrayName() { return this->Lighting->GetApertureRadiusArrayName(); }
+  ///@}
+
+  ///@{
+  /**
+   * Sky colour and intensity (default white, 0: no sky).
+   */
+  void SetSkyColor(double r, double g, double b) { this->Lighting->SetSkyColor(r, g, b); }
+  double* GetSkyColor() VTK_SIZEHINT(3) { return this->Lighting->GetSkyColor(); }
+  void SetSkyIntensity(double intensity) { this->Lighting->SetSkyIntensity(intensity); }
+  double GetSkyIntensity() { return this->Lighting->GetSkyIntensity(); }
+  ///@}
+
+  ///@{
+  /**
+   * Angular radius of lights without a radius of their own. Default 0.0047 rad (the sun).
+   */
+  void SetDefaultLightRadius(double radius) { this->Lighting->SetDefaultLightRadius(radius); }
+  double GetDefaultLightRadius() { return this->Lighting->GetDefaultLightRadius(); }
+  ///@}
+
+  ///@{
+  /**
+   * Per-texel mode: the aperture grid from vtkAperturePrecompute (nullptr: per vertex).
+   */
+  void SetApertureImage(vtkImageData* image) { this->Lighting->SetApertureImage(image); }
+  vtkImageData* GetApertureImage() { return this->Lighting->GetApertureImage(); }
+  ///@}
+
+  ///@{
+  /**
+   * The size of a light, carried by the light: angular radius (rad) of a directional light,
+   * world radius of a positional one. GetLightRadius() returns -1 for a light without one.
+   */
+  static void SetLightRadius(vtkLight* light, double radius)
+  {
+    vtkApertureLightingInterface::SetLightRadius(light, radius);
+  }
+  static double GetLightRadius(vtkLight* light)
+  {
+    return vtkApertureLightingInterface::GetLightRadius(light);
+  }
+  ///@}
+
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+protected:
+  vtkApertureLightingMapper() = default;
+  ~vtkApertureLightingMapper() override = default;
+
+  void RenderPiece(vtkRenderer* renderer, vtkActor* actor) override;
+  void RenderPieceFinish(vtkRenderer* renderer, vtkActor* actor) override;
+  bool GetNeedToRebuildShaders(
+    vtkOpenGLHelper& cellBO, vtkRenderer* renderer, vtkActor* actor) override;
+  void ReplaceShaderLight(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* renderer, vtkActor* actor) override;
+  void SetMapperShaderParameters(
+    vtkOpenGLHelper& cellBO, vtkRenderer* renderer, vtkActor* actor) override;
+
+  vtkNew<vtkApertureLightingInterface> Lighting;
+
+private:
+  vtkApertureLightingMapper(const vtkApertureLightingMapper&) = delete;
+  void operator=(const vtkApertureLightingMapper&) = delete;
+
+  // Maps the aperture arrays (or texture coordinates) to vertex attributes when they change.
+  void MapApertureAttributes(vtkPolyData* input);
+
+  // What this render shades with; a change rebuilds the shaders.
+  int State = 0;
+  std::map<const vtkOpenGLHelper*, int> ShaderState;
+};
+
+#endif

@@ -1,0 +1,233 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    BenchmarkApertureLightingMapper.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+// Frame time of vtkApertureLightingMapper against vtkPolyDataMapper, measured side by side in
+// one run: a 1M-triangle height field (the Fuji tile resampled to 708 x 708 points) at 1024 x 768,
+// median over an orbit of the camera, for each shading model, and for vtkSSAOPass (kernel 32)
+// on the plain mapper as a peer reference. The configurations take turns, frame by frame, so
+// that a noisy machine affects all of them alike. Both wall-clock time and the process's CPU time
+// are measured: with Mesa's llvmpipe all rendering threads are the process's own, and CPU time
+// does not count time lost to other processes.
+//
+// Usage: BenchmarkApertureLightingMapper <Testing/Data folder> [--quick]
+//          [--side N] [--size WxH] [--frames N]
+// --quick uses a small grid and window (a smoke test that the benchmark still works); --side sets
+// the grid (2 (N - 1)^2 triangles), --size the window, --frames the frames per configuration.
+
+#include "vtkApertureLightingMapper.h"
+#include "vtkAperturePrecompute.h"
+#include "vtkTerrainRGBReader.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkImageDataGeometryFilter.h"
+#include "vtkImageResize.h"
+#include "vtkLight.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSSAOPass.h"
+#include "vtkWarpScalar.h"
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace
+{
+struct Configuration
+{
+  std::string Name;
+  std::function<void()> Apply;
+  std::vector<double> Wall, Cpu;
+};
+
+// CPU time of this process (all threads), in seconds.
+double ProcessSeconds()
+{
+  rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_utime.tv_sec + usage.ru_stime.tv_sec +
+    1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+double Median(std::vector<double> values)
+{
+  std::sort(values.begin(), values.end());
+  const size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+}
+
+int main(int argc, char* argv[])
+{
+  if (argc < 2)
+  {
+    std::cerr << "Usage: " << argv[0] << " <Testing/Data folder> [--quick]\n";
+    return 2;
+  }
+  const std::string data = argv[1];
+  int side = 708, width = 1024, height = 768, frames = 30;
+  for (int i = 2; i < argc; ++i)
+  {
+    const std::string option = argv[i];
+    if (option == "--quick")
+    {
+      side = 64;
+      width = 320;
+      height = 240;
+      frames = 3;
+    }
+    else if (option == "--side" && i + 1 < argc)
+    {
+      side = std::max(2, std::atoi(argv[++i]));
+    }
+    else if (option == "--size" && i + 1 < argc)
+    {
+      std::sscanf(argv[++i], "%dx%d", &width, &height);
+    }
+    else if (option == "--frames" && i + 1 < argc)
+    {
+      frames = std::max(1, std::atoi(argv[++i]));
+    }
+  }
+
+  vtkNew<vtkTerrainRGBReader> reader;
+  reader->SetFileName((data + "/fuji-terrain-rgb.png").c_str());
+  reader->SetSpacing(60.0, 60.0);
+  vtkNew<vtkImageResize> resize;
+  resize->SetInputConnection(reader->GetOutputPort());
+  resize->SetOutputDimensions(side, side, 1);
+  vtkNew<vtkImageDataGeometryFilter> surface;
+  surface->SetInputConnection(resize->GetOutputPort());
+  vtkNew<vtkWarpScalar> warp;
+  warp->SetInputConnection(surface->GetOutputPort());
+  // Frame times do not depend on the quality of the apertures: few rays.
+  vtkNew<vtkAperturePrecompute> apertures;
+  apertures->SetInputConnection(warp->GetOutputPort());
+  apertures->SetNumberOfRays(16);
+  apertures->Update();
+  vtkPolyData* terrain = apertures->GetPolyDataOutput();
+  const vtkIdType triangles = 2 * terrain->GetNumberOfPolys();
+
+  vtkNew<vtkPolyDataMapper> plain;
+  plain->SetInputData(terrain);
+  plain->ScalarVisibilityOff();
+  vtkNew<vtkApertureLightingMapper> aperture;
+  aperture->SetInputData(terrain);
+  aperture->ScalarVisibilityOff();
+  aperture->SetSkyIntensity(0.3);
+  vtkNew<vtkActor> actor;
+  actor->GetProperty()->SetColor(0.85, 0.8, 0.7);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  vtkNew<vtkLight> sun;
+  sun->SetLightTypeToSceneLight();
+  sun->SetPosition(-1.0, 0.2, 0.3);
+  sun->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->AddLight(sun);
+  vtkNew<vtkRenderWindow> window;
+  window->SetSize(width, height);
+  window->SetMultiSamples(0);
+  window->AddRenderer(renderer);
+
+  double bounds[6];
+  terrain->GetBounds(bounds);
+  vtkNew<vtkRenderStepsPass> basic;
+  vtkNew<vtkSSAOPass> ssao;
+  ssao->SetDelegatePass(basic);
+  ssao->SetKernelSize(32);
+  ssao->SetRadius(0.05 * (bounds[1] - bounds[0]));
+  ssao->SetBias(0.01 * (bounds[5] - bounds[4]));
+  ssao->BlurOn();
+
+  auto use = [&](vtkMapper* mapper, bool withSSAO)
+  {
+    actor->SetMapper(mapper);
+    renderer->SetPass(withSSAO ? static_cast<vtkRenderPass*>(ssao) : nullptr);
+  };
+  auto model = [&](int mode, int lambert)
+  {
+    use(aperture, false);
+    aperture->SetShadingMode(mode);
+    aperture->GetApertureLighting()->SetLambertMode(lambert);
+  };
+  std::vector<Configuration> configurations = {
+    { "vtkPolyDataMapper", [&]() { use(plain, false); }, {} },
+    { "Standard", [&]() { model(vtkApertureLightingInterface::STANDARD, 0); }, {} },
+    { "Exact", [&]() { model(vtkApertureLightingInterface::EXACT, 0); }, {} },
+    { "Exact (lens moment)", [&]() { model(vtkApertureLightingInterface::EXACT, 1); }, {} },
+    { "Smoothstep", [&]() { model(vtkApertureLightingInterface::SMOOTHSTEP, 0); }, {} },
+    { "Simplified", [&]() { model(vtkApertureLightingInterface::SIMPLIFIED, 0); }, {} },
+    { "BentNormal", [&]() { model(vtkApertureLightingInterface::BENT_NORMAL, 0); }, {} },
+    { "vtkSSAOPass (kernel 32)", [&]() { use(plain, true); }, {} },
+  };
+
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const double center[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+    bounds[4] };
+  const double distance = 1.2 * (bounds[1] - bounds[0]);
+  for (Configuration& c : configurations)
+  {
+    c.Apply();
+    window->Render(); // shaders, buffers
+  }
+  for (int frame = 0; frame < frames; ++frame)
+  {
+    const double angle = 2.0 * 3.141592653589793 * frame / frames;
+    camera->SetFocalPoint(center);
+    camera->SetPosition(center[0] + distance * std::cos(angle),
+      center[1] + distance * std::sin(angle), center[2] + 0.6 * distance);
+    camera->SetViewUp(0, 0, 1);
+    renderer->ResetCameraClippingRange();
+    for (Configuration& c : configurations)
+    {
+      c.Apply();
+      window->Render(); // a configuration switch may rebuild shaders: not timed
+      const double cpu = ProcessSeconds();
+      const auto start = std::chrono::steady_clock::now();
+      window->Render();
+      window->WaitForCompletion();
+      const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+      c.Wall.push_back(elapsed.count());
+      c.Cpu.push_back(ProcessSeconds() - cpu);
+    }
+  }
+
+  const double wallReference = Median(configurations[0].Wall);
+  const double cpuReference = Median(configurations[0].Cpu);
+  std::cout << "## vtkApertureLightingMapper benchmark\n\n"
+            << triangles << " triangles (" << side << " x " << side << " height field), " << width
+            << " x " << height << ", one sun and a sky, median of " << frames
+            << " frames over an orbit\n\n"
+            << "| mapper / shading | median frame (wall) | ratio (wall) | median frame (CPU) | "
+               "ratio (CPU) | goal |\n"
+            << "|---|---|---|---|---|---|\n";
+  for (const Configuration& c : configurations)
+  {
+    const double wall = Median(c.Wall), cpu = Median(c.Cpu);
+    const char* goal = c.Name == "Exact" ? "<= 1.3" : (c.Name == "Smoothstep" ? "<= 1.2" : "");
+    std::printf("| %s | %.1f ms | %.2f | %.1f ms | %.2f | %s |\n", c.Name.c_str(), 1000.0 * wall,
+      wall / wallReference, 1000.0 * cpu, cpu / cpuReference, goal);
+  }
+  return 0;
+}
