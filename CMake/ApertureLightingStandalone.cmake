@@ -121,6 +121,8 @@ if (APERTURELIGHTING_WRAP_PYTHON)
     COMPONENT python)
 endif ()
 
+add_subdirectory(Examples)
+
 # CMake package, usable from the build tree and after installation.
 include(CMakePackageConfigHelpers)
 set(APERTURELIGHTING_VTK_COMPONENTS ${_aperture_vtk_components})
