@@ -13,7 +13,8 @@ set(_aperture_vtk_components
   RenderingCore
   RenderingOpenGL2
   opengl
-  vtksys)
+  vtksys
+  zlib)
 set(_aperture_vtk_test_components
   FiltersGeneral
   FiltersGeometry

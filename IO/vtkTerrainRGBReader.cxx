@@ -18,10 +18,10 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPNGReader.h"
+#include "vtkPNGValidator.h"
 #include "vtkPointData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
-#include "vtksys/SystemTools.hxx"
 
 vtkStandardNewMacro(vtkTerrainRGBReader);
 
@@ -32,21 +32,51 @@ vtkTerrainRGBReader::vtkTerrainRGBReader()
 }
 
 //------------------------------------------------------------------------------
+void vtkTerrainRGBReader::SetMemoryBuffer(const void* buffer)
+{
+  if (this->MemoryBuffer != buffer)
+  {
+    this->MemoryBuffer = buffer;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPNGReader> vtkTerrainRGBReader::MakePNGReader()
+{
+  // vtkPNGReader crashes on PNGs that libpng cannot decode: check them first.
+  const std::string problem = this->MemoryBuffer
+    ? vtkPNGValidator::CheckBuffer(
+        this->MemoryBuffer, static_cast<size_t>(this->MemoryBufferLength))
+    : vtkPNGValidator::CheckFile(this->FileName.c_str());
+  if (!problem.empty())
+  {
+    vtkErrorMacro(<< (this->MemoryBuffer ? "The memory buffer " : "Terrain-RGB file ") << problem
+                  << ".");
+    return nullptr;
+  }
+  auto png = vtkSmartPointer<vtkPNGReader>::New();
+  if (this->MemoryBuffer)
+  {
+    png->SetMemoryBuffer(this->MemoryBuffer);
+    png->SetMemoryBufferLength(this->MemoryBufferLength);
+  }
+  else
+  {
+    png->SetFileName(this->FileName.c_str());
+  }
+  return png;
+}
+
+//------------------------------------------------------------------------------
 int vtkTerrainRGBReader::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
-  if (this->FileName.empty() || !vtksys::SystemTools::FileExists(this->FileName, true))
+  vtkSmartPointer<vtkPNGReader> png = this->MakePNGReader();
+  if (!png)
   {
-    vtkErrorMacro("Terrain-RGB file '" << this->FileName << "' does not exist.");
     return 0;
   }
-  vtkNew<vtkPNGReader> png;
-  if (!png->CanReadFile(this->FileName.c_str()))
-  {
-    vtkErrorMacro("'" << this->FileName << "' is not a PNG file.");
-    return 0;
-  }
-  png->SetFileName(this->FileName.c_str());
   png->UpdateInformation();
   int extent[6];
   png->GetDataExtent(extent);
@@ -64,15 +94,20 @@ int vtkTerrainRGBReader::RequestData(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   vtkImageData* output = vtkImageData::GetData(outputVector);
-  vtkNew<vtkPNGReader> png;
-  png->SetFileName(this->FileName.c_str());
+  vtkSmartPointer<vtkPNGReader> png = this->MakePNGReader();
+  if (!png)
+  {
+    return 0;
+  }
   png->Update();
   vtkImageData* image = png->GetOutput();
   auto* rgb = vtkUnsignedCharArray::SafeDownCast(image->GetPointData()->GetScalars());
+  const std::string source =
+    this->MemoryBuffer ? std::string("The memory buffer") : "'" + this->FileName + "'";
   if (!rgb || rgb->GetNumberOfComponents() < 3)
   {
-    vtkErrorMacro("'" << this->FileName
-                      << "' is not a Terrain-RGB tile: it needs at least three 8-bit channels.");
+    vtkErrorMacro(<< source
+                  << " is not a Terrain-RGB tile: it needs at least three 8-bit channels.");
     return 0;
   }
 
@@ -98,6 +133,8 @@ void vtkTerrainRGBReader::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << this->FileName << "\n";
+  os << indent << "MemoryBuffer: " << this->MemoryBuffer << "\n";
+  os << indent << "MemoryBufferLength: " << this->MemoryBufferLength << "\n";
   os << indent << "Spacing: " << this->Spacing[0] << ", " << this->Spacing[1] << "\n";
   os << indent << "Origin: " << this->Origin[0] << ", " << this->Origin[1] << ", "
      << this->Origin[2] << "\n";

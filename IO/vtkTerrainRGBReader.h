@@ -17,9 +17,11 @@
  * them into a 2D vtkImageData whose point scalars, a float array named `Elevation`, are metres,
  * ready for vtkAperturePrecompute's height-field mode or vtkWarpScalar. Image row 0 is the bottom
  * (southern) row, as VTK orders images; the tile's ground size is not in the file, so the grid
- * spacing (metres per pixel) and origin are properties.
+ * spacing (metres per pixel) and origin are properties. The PNG can also be read from memory
+ * (SetMemoryBuffer()), for tiles compiled into a program or received over a network.
  *
- * A missing or unreadable file, or a PNG without at least three 8-bit channels, is an error.
+ * A missing or unreadable file, a buffer that is not a PNG, or a PNG without at least three 8-bit
+ * channels is an error.
  */
 
 #ifndef vtkTerrainRGBReader_h
@@ -28,7 +30,11 @@
 #include "vtkApertureLightingModule.h" // For export macro
 #include "vtkImageAlgorithm.h"
 
+#include "vtkSmartPointer.h" // For vtkSmartPointer
+
 #include <string> // For std::string
+
+class vtkPNGReader;
 
 class VTKAPERTURELIGHTING_EXPORT vtkTerrainRGBReader : public vtkImageAlgorithm
 {
@@ -43,6 +49,17 @@ public:
    */
   vtkSetStdStringFromCharMacro(FileName);
   vtkGetCharFromStdStringMacro(FileName);
+  ///@}
+
+  ///@{
+  /**
+   * Read the PNG from this buffer of MemoryBufferLength bytes instead of FileName. The buffer is
+   * not copied: it must outlive the reads. Set nullptr to read FileName again.
+   */
+  void SetMemoryBuffer(const void* buffer);
+  const void* GetMemoryBuffer() const { return this->MemoryBuffer; }
+  vtkSetClampMacro(MemoryBufferLength, vtkIdType, 0, VTK_ID_MAX);
+  vtkGetMacro(MemoryBufferLength, vtkIdType);
   ///@}
 
   ///@{
@@ -78,7 +95,13 @@ protected:
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
+  // A PNG reader set up for the file or the memory buffer; nullptr, after an error, when there is
+  // nothing readable.
+  vtkSmartPointer<vtkPNGReader> MakePNGReader();
+
   std::string FileName;
+  const void* MemoryBuffer = nullptr;
+  vtkIdType MemoryBufferLength = 0;
   double Spacing[2] = { 1.0, 1.0 };
   double Origin[3] = { 0.0, 0.0, 0.0 };
 
