@@ -1,4 +1,5 @@
-# ApertureLighting: `make test` installs what is missing, builds and runs every test.
+# ApertureLighting: `make demo` installs what is missing, builds and renders the default scene;
+# `make test` installs, builds and runs every test; `make pictures` remakes the README's pictures.
 # Variables: BUILD_DIR (build), BUILD_TYPE (Release), JOBS (all cores), CMAKE_ARGS.
 
 BUILD_DIR ?= build
@@ -8,7 +9,11 @@ JOBS ?= $(shell nproc)
 PYTHON ?= /usr/bin/python3
 CMAKE_ARGS ?=
 
-.PHONY: all deps configure build test install format clean
+# Debian's VTK renders through X only: pictures are made on a virtual screen.
+XVFB = xvfb-run -a -s "-screen 0 1920x1080x24"
+RENDER = $(XVFB) $(BUILD_DIR)/bin/aperture-render
+
+.PHONY: all deps configure build demo test pictures install format clean
 
 all: build
 
@@ -24,9 +29,28 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD_DIR) --parallel $(JOBS)
 
+demo: build
+	@mkdir -p $(BUILD_DIR)/demo
+	@$(RENDER) -o $(BUILD_DIR)/demo/fuji.png --cache $(BUILD_DIR)/demo/fuji-apertures.vti
+	@echo "Demo picture: $(abspath $(BUILD_DIR)/demo/fuji.png)"
+
 test: build
 	@cd $(BUILD_DIR) && xvfb-run -a -s "-screen 0 1920x1080x24" \
 	  ctest --output-on-failure --parallel $(JOBS)
+
+# The pictures in README.md and docs/: every shading mode on the Fuji terrain and on the bunny, and
+# the aperture radius as colours.
+pictures: build
+	@mkdir -p docs/images $(BUILD_DIR)/demo
+	@$(RENDER) -o docs/images/fuji.png --size 1280x800 \
+	  --cache $(BUILD_DIR)/demo/fuji-apertures.vti
+	@$(RENDER) -o docs/images/fuji-modes.png --mode all --size 480x330 \
+	  --cache $(BUILD_DIR)/demo/fuji-apertures.vti
+	@$(RENDER) -o docs/images/fuji-apertures.png --show apertures --size 800x500 \
+	  --cache $(BUILD_DIR)/demo/fuji-apertures.vti
+	@$(RENDER) Testing/Data/stanford-bunny.obj -o docs/images/bunny-modes.png --mode all \
+	  --size 360x330 --sphere-light -0.15,0.22,0.14,0.03 \
+	  --cache $(BUILD_DIR)/demo/bunny-apertures.vtp
 
 install: build
 	@cmake --install $(BUILD_DIR)

@@ -21,10 +21,14 @@ set(_aperture_vtk_test_components
   FiltersSources
   FiltersTexture
   IOGeometry
+  IOLegacy
+  IOPLY
   IOXML
   ImagingCore
   ImagingGeneral
   InteractionStyle
+  RenderingAnnotation
+  RenderingFreeType
   TestingCore
   TestingRendering)
 find_package(VTK 9.1 REQUIRED

@@ -1,0 +1,48 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    ApertureRenderDisplay.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "ApertureRenderDisplay.h"
+
+#include <X11/Xlib.h>
+
+#include <cstdlib>
+
+namespace ApertureRender
+{
+void* OpenDisplay(std::string& error)
+{
+  const char* name = std::getenv("DISPLAY");
+  Display* display = XOpenDisplay(nullptr);
+  if (!display)
+  {
+    error = std::string("cannot open the X display '") + (name ? name : "") +
+      "' (Debian's VTK renders through X: run under xvfb-run -a -s '-screen 0 1280x1024x24' "
+      "for pictures without a screen)";
+    return nullptr;
+  }
+  const int depth = DefaultDepth(display, DefaultScreen(display));
+  if (depth < 24)
+  {
+    XCloseDisplay(display);
+    error = std::string("the X display '") + (name ? name : "") + "' has " + std::to_string(depth) +
+      "-bit colour; OpenGL needs 24 (with Xvfb: xvfb-run -a -s '-screen 0 1280x1024x24')";
+    return nullptr;
+  }
+  return display;
+}
+
+void CloseDisplay(void* display)
+{
+  if (display)
+  {
+    XCloseDisplay(static_cast<Display*>(display));
+  }
+}
+}

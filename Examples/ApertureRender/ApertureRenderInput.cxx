@@ -1,0 +1,538 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    ApertureRenderInput.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "ApertureRenderInput.h"
+
+#include "ApertureRenderFuji.h"
+#include "ApertureRenderMessages.h"
+#include "ApertureRenderOptions.h"
+#include "ApertureRenderPLY.h"
+
+#include "vtkDEMReader.h"
+#include "vtkDataSetReader.h"
+#include "vtkDataSetSurfaceFilter.h"
+#include "vtkFloatArray.h"
+#include "vtkImageReader2.h"
+#include "vtkImageResize.h"
+#include "vtkNew.h"
+#include "vtkOBJReader.h"
+#include "vtkPLYReader.h"
+#include "vtkPNGReader.h"
+#include "vtkPNGValidator.h"
+#include "vtkPointData.h"
+#include "vtkSTLReader.h"
+#include "vtkTIFFReader.h"
+#include "vtkTerrainRGBReader.h"
+#include "vtkXMLPolyDataReader.h"
+#include "vtksys/SystemTools.hxx"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <limits>
+#include <regex>
+#include <sstream>
+
+namespace ApertureRender
+{
+namespace
+{
+// Metres per arc-second of latitude.
+constexpr double MetresPerArcSecond = 30.87;
+
+std::string Quoted(const std::string& text)
+{
+  return "'" + text + "'";
+}
+
+// The first VTK error of a read, or `fallback`.
+std::string ReadError(MessageCapture& messages, const std::string& fallback)
+{
+  const std::string error = messages.FirstError();
+  return error.empty() ? fallback : error;
+}
+
+bool LoadMesh(const std::string& name, const std::string& extension, MessageCapture& messages,
+  Input& input, std::string& error)
+{
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (extension == ".obj")
+  {
+    auto obj = vtkSmartPointer<vtkOBJReader>::New();
+    obj->SetFileName(name.c_str());
+    reader = obj;
+  }
+  else if (extension == ".ply")
+  {
+    if (!CheckPLY(name, error))
+    {
+      return false;
+    }
+    auto ply = vtkSmartPointer<vtkPLYReader>::New();
+    ply->SetFileName(name.c_str());
+    reader = ply;
+  }
+  else if (extension == ".stl")
+  {
+    // vtkSTLReader reads what a truncated binary file holds without a word; its header says how
+    // many triangles there should be (50 bytes each after 84 bytes of header).
+    if (vtksys::SystemTools::DetectFileType(name.c_str()) != vtksys::SystemTools::FileTypeText)
+    {
+      const unsigned long size = vtksys::SystemTools::FileLength(name);
+      unsigned char count[4] = { 0, 0, 0, 0 };
+      FILE* file = vtksys::SystemTools::Fopen(name, "rb");
+      const bool header =
+        file && std::fseek(file, 80, SEEK_SET) == 0 && std::fread(count, 1, 4, file) == 4;
+      if (file)
+      {
+        std::fclose(file);
+      }
+      const uint64_t triangles = count[0] | (uint64_t(count[1]) << 8) | (uint64_t(count[2]) << 16) |
+        (uint64_t(count[3]) << 24);
+      if (!header || size < 84 + 50 * triangles)
+      {
+        std::ostringstream what;
+        what << Quoted(name) << " is truncated (its header announces " << triangles
+             << " triangles, " << (size > 84 ? (size - 84) / 50 : 0) << " are there)";
+        error = what.str();
+        return false;
+      }
+    }
+    auto stl = vtkSmartPointer<vtkSTLReader>::New();
+    stl->SetFileName(name.c_str());
+    reader = stl;
+  }
+  else if (extension == ".vtp")
+  {
+    auto vtp = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    if (!vtp->CanReadFile(name.c_str()))
+    {
+      error = Quoted(name) + " is not a VTK XML polydata file";
+      return false;
+    }
+    vtp->SetFileName(name.c_str());
+    reader = vtp;
+  }
+  else
+  {
+    // Legacy files may hold any dataset: its outer surface is shaded.
+    auto legacy = vtkSmartPointer<vtkDataSetReader>::New();
+    legacy->SetFileName(name.c_str());
+    legacy->ReadAllScalarsOn();
+    legacy->ReadAllVectorsOn();
+    legacy->ReadAllNormalsOn();
+    legacy->ReadAllTCoordsOn();
+    legacy->ReadAllFieldsOn();
+    legacy->ReadAllColorScalarsOn();
+    if (!legacy->OpenVTKFile() || !legacy->ReadHeader())
+    {
+      legacy->CloseVTKFile();
+      error = Quoted(name) + " is not a VTK legacy file";
+      return false;
+    }
+    legacy->CloseVTKFile();
+    auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
+    surface->SetInputConnection(legacy->GetOutputPort());
+    reader = surface;
+  }
+  messages.Clear();
+  reader->Update();
+  auto* mesh = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+  if (!messages.FirstError().empty() || !mesh)
+  {
+    error = "cannot read " + Quoted(name) + ": " + ReadError(messages, "unknown error");
+    return false;
+  }
+  if (mesh->GetNumberOfPolys() + mesh->GetNumberOfStrips() == 0)
+  {
+    std::ostringstream what;
+    what << Quoted(name) << " has no polygons to shade (" << mesh->GetNumberOfPoints()
+         << " points, " << mesh->GetNumberOfLines() << " lines)";
+    error = what.str();
+    return false;
+  }
+  input.Mesh = vtkSmartPointer<vtkPolyData>::New();
+  input.Mesh->ShallowCopy(mesh);
+  std::ostringstream description;
+  description << vtksys::SystemTools::GetFilenameName(name) << ": " << mesh->GetNumberOfPoints()
+              << " points, " << mesh->GetNumberOfPolys() + mesh->GetNumberOfStrips() << " polygons";
+  input.Description = description.str();
+  return true;
+}
+
+// Checks a USGS DEM the way vtkDEMReader reads it, which would divide by zero on a grid
+// narrower than 100 columns and write outside its image for profiles that do not fit.
+bool CheckDEM(const std::string& name, std::string& error)
+{
+  FILE* file = vtksys::SystemTools::Fopen(name, "rb");
+  if (!file)
+  {
+    error = Quoted(name) + " cannot be read";
+    return false;
+  }
+  char record[1025] = { 0 };
+  const bool header = std::fread(record, 1, 1024, file) == 1024;
+  for (char& c : record)
+  {
+    c = c == 'D' ? 'E' : c; // Fortran exponents
+  }
+  int planeUnit = 0, elevationUnit = 0;
+  float corners[8] = { 0 }, resolution[3] = { 0 };
+  int profiles[2] = { 0, 0 };
+  const bool fields = header &&
+    std::sscanf(record + 528, "%6d%6d", &planeUnit, &elevationUnit) == 2 &&
+    std::sscanf(record + 546, "%24g%24g%24g%24g%24g%24g%24g%24g", corners, corners + 1, corners + 2,
+      corners + 3, corners + 4, corners + 5, corners + 6, corners + 7) == 8;
+  char buffer[13] = { 0 };
+  for (int k = 0; fields && k < 3; ++k)
+  {
+    std::copy(record + 816 + 12 * k, record + 828 + 12 * k, buffer);
+    std::sscanf(buffer, "%12g", resolution + k);
+  }
+  const bool dimensions =
+    fields && std::sscanf(record + 852, "%6d%6d", profiles, profiles + 1) == 2;
+  if (!dimensions || !(resolution[0] > 0.0f) || !(resolution[1] > 0.0f) ||
+    !std::isfinite(resolution[0]) || !std::isfinite(resolution[1]))
+  {
+    std::fclose(file);
+    error = Quoted(name) + " is not a USGS DEM (its type A record is incomplete or invalid)";
+    return false;
+  }
+  // As vtkDEMReader::ComputeExtentOriginAndSpacing: corners SW, NW, NE, SE.
+  const float east = std::max(corners[4], corners[6]), west = std::min(corners[2], corners[0]);
+  const float north = std::max(corners[5], corners[3]), south = std::min(corners[1], corners[7]);
+  const double columns = std::floor((east - west) / resolution[0] + 1.0);
+  const double rows = std::floor((north - south) / resolution[1] + 1.0);
+  if (!(columns >= 100 && rows >= 2 && columns * rows <= double(1 << 28)))
+  {
+    std::fclose(file);
+    std::ostringstream what;
+    what << Quoted(name) << " is a DEM of " << columns << " x " << rows
+         << " samples; VTK's DEM reader needs 100 to 16384 columns and 2 or more rows";
+    error = what.str();
+    return false;
+  }
+  std::fseek(file, 1024, SEEK_SET);
+  for (int column = 0; column < profiles[1]; ++column)
+  {
+    int id[2], size[2];
+    char header2[121];
+    if (std::fscanf(file, "%6d%6d%6d%6d", id, id + 1, size, size + 1) == EOF)
+    {
+      break;
+    }
+    if (std::fscanf(file, "%120c", header2) != 1)
+    {
+      std::fclose(file);
+      error = Quoted(name) + " is truncated (a profile header is cut off)";
+      return false;
+    }
+    const double row = id[0] - 1.0, col = id[1] - 1.0, last = row + size[0] - 1.0;
+    if (col < 0 || col >= columns || row < 0 || last >= rows)
+    {
+      std::fclose(file);
+      error = Quoted(name) + " is damaged (a profile lies outside the grid its header declares)";
+      return false;
+    }
+    int value;
+    for (int k = 0; k < size[0]; ++k)
+    {
+      if (std::fscanf(file, "%6d", &value) != 1)
+      {
+        std::fclose(file);
+        error = Quoted(name) + " is truncated (a profile ends early)";
+        return false;
+      }
+    }
+  }
+  std::fclose(file);
+  return true;
+}
+
+// The heights of an image's first scalar component as a float Elevation array, on a copy of
+// its grid.
+vtkSmartPointer<vtkImageData> AsHeights(vtkImageData* image)
+{
+  auto heights = vtkSmartPointer<vtkImageData>::New();
+  heights->CopyStructure(image);
+  vtkDataArray* scalars = image->GetPointData()->GetScalars();
+  vtkNew<vtkFloatArray> elevation;
+  elevation->SetName("Elevation");
+  elevation->SetNumberOfTuples(scalars->GetNumberOfTuples());
+  for (vtkIdType i = 0; i < scalars->GetNumberOfTuples(); ++i)
+  {
+    elevation->SetValue(i, static_cast<float>(scalars->GetComponent(i, 0)));
+  }
+  heights->GetPointData()->SetScalars(elevation);
+  return heights;
+}
+
+bool LoadHeightField(const std::string& name, const std::string& extension, const Options& options,
+  MessageCapture& messages, Input& input, std::string& error)
+{
+  vtkSmartPointer<vtkImageData> image;
+  double spacing = options.Spacing > 0.0 ? options.Spacing : 30.0;
+  std::string kind;
+  messages.Clear();
+  if (extension == ".png")
+  {
+    const std::string problem = vtkPNGValidator::CheckFile(name.c_str());
+    if (!problem.empty())
+    {
+      error = problem;
+      return false;
+    }
+    vtkNew<vtkPNGReader> png;
+    png->SetFileName(name.c_str());
+    png->UpdateInformation();
+    if (png->GetNumberOfScalarComponents() >= 3 && png->GetDataScalarType() == VTK_UNSIGNED_CHAR)
+    {
+      vtkNew<vtkTerrainRGBReader> terrain;
+      terrain->SetFileName(name.c_str());
+      terrain->SetSpacing(spacing, spacing);
+      terrain->Update();
+      image = terrain->GetOutput();
+      kind = "Terrain-RGB";
+    }
+    else
+    {
+      png->Update();
+      image = AsHeights(png->GetOutput());
+      image->SetSpacing(spacing, spacing, 1.0);
+      kind = png->GetDataScalarType() == VTK_UNSIGNED_SHORT ? "16-bit grey" : "8-bit grey";
+    }
+  }
+  else if (extension == ".tif" || extension == ".tiff")
+  {
+    vtkNew<vtkTIFFReader> tiff;
+    if (!tiff->CanReadFile(name.c_str()))
+    {
+      error = Quoted(name) + " is not a TIFF file";
+      return false;
+    }
+    tiff->SetFileName(name.c_str());
+    tiff->Update();
+    vtkDataArray* scalars = tiff->GetOutput()->GetPointData()->GetScalars();
+    if (!messages.FirstError().empty() || !scalars)
+    {
+      error = "cannot read " + Quoted(name) + ": " + ReadError(messages, "no image data");
+      return false;
+    }
+    if (scalars->GetNumberOfComponents() != 1)
+    {
+      error = Quoted(name) + " has " + std::to_string(scalars->GetNumberOfComponents()) +
+        " channels; a height field needs one grey channel";
+      return false;
+    }
+    image = AsHeights(tiff->GetOutput());
+    image->SetSpacing(spacing, spacing, 1.0);
+    kind = "TIFF";
+  }
+  else if (extension == ".dem")
+  {
+    if (!CheckDEM(name, error))
+    {
+      return false;
+    }
+    vtkNew<vtkDEMReader> dem;
+    dem->SetFileName(name.c_str());
+    dem->SetElevationReferenceToSeaLevel();
+    dem->Update();
+    image = AsHeights(dem->GetOutput());
+    if (options.Spacing > 0.0)
+    {
+      image->SetSpacing(spacing, spacing, 1.0);
+    }
+    kind = "USGS DEM";
+  }
+  else // .hgt
+  {
+    // SRTM: N x N big-endian 16-bit heights, north row first, -32768 where there is no data.
+    const unsigned long bytes = vtksys::SystemTools::FileLength(name);
+    const auto side = static_cast<int>(std::lround(std::sqrt(bytes / 2.0)));
+    if (side < 2 || 2ul * side * side != bytes)
+    {
+      error = Quoted(name) + " is not an SRTM tile: its " + std::to_string(bytes) +
+        " bytes are not N x N 16-bit samples";
+      return false;
+    }
+    vtkNew<vtkImageReader2> raw;
+    raw->SetFileName(name.c_str());
+    raw->SetFileDimensionality(2);
+    raw->SetDataScalarTypeToShort();
+    raw->SetDataByteOrderToBigEndian();
+    raw->SetNumberOfScalarComponents(1);
+    raw->SetDataExtent(0, side - 1, 0, side - 1, 0, 0);
+    raw->FileLowerLeftOff();
+    raw->Update();
+    if (!messages.FirstError().empty())
+    {
+      error = "cannot read " + Quoted(name) + ": " + messages.FirstError();
+      return false;
+    }
+    image = AsHeights(raw->GetOutput());
+    // Samples are 3600/(N-1) arc-seconds apart; east-west spacing shrinks with the latitude
+    // the name gives (N35E138.hgt: 35 to 36 degrees north).
+    const double arcSeconds = 3600.0 / (side - 1);
+    double latitude = 0.0;
+    std::smatch match;
+    const std::string base = vtksys::SystemTools::GetFilenameName(name);
+    if (std::regex_search(base, match, std::regex("^([NSns])([0-9]{1,2})[EWew][0-9]{1,3}")))
+    {
+      latitude = std::stod(match[2]) + 0.5;
+      latitude = (match[1] == "S" || match[1] == "s") ? -latitude : latitude;
+    }
+    else
+    {
+      input.Notes.push_back(
+        "the tile's name gives no latitude: east-west spacing as at the equator");
+    }
+    const double dy = options.Spacing > 0.0 ? options.Spacing : arcSeconds * MetresPerArcSecond;
+    const double dx =
+      options.Spacing > 0.0 ? options.Spacing : dy * std::cos(latitude * 3.141592653589793 / 180.0);
+    image->SetSpacing(dx, dy, 1.0);
+    kind = "SRTM";
+  }
+  if (!messages.FirstError().empty() || !image || image->GetNumberOfPoints() == 0)
+  {
+    error = "cannot read " + Quoted(name) + ": " + ReadError(messages, "no heights in it");
+    return false;
+  }
+  input.Heights = image;
+  std::ostringstream description;
+  int dims[3];
+  image->GetDimensions(dims);
+  description << (name.empty() ? std::string("Mount Fuji")
+                               : vtksys::SystemTools::GetFilenameName(name))
+              << ": " << kind << " height field, " << dims[0] << " x " << dims[1] << " samples, "
+              << image->GetSpacing()[0] << " m apart";
+  input.Description = description.str();
+  return true;
+}
+
+// SRTM voids (-32768) and non-finite heights become the lowest valid height.
+void FillVoids(Input& input)
+{
+  auto* heights = vtkFloatArray::SafeDownCast(input.Heights->GetPointData()->GetScalars());
+  float lowest = std::numeric_limits<float>::max();
+  vtkIdType voids = 0;
+  for (vtkIdType i = 0; i < heights->GetNumberOfTuples(); ++i)
+  {
+    const float h = heights->GetValue(i);
+    if (std::isfinite(h) && h > -32767.0f)
+    {
+      lowest = std::min(lowest, h);
+    }
+  }
+  for (vtkIdType i = 0; i < heights->GetNumberOfTuples(); ++i)
+  {
+    const float h = heights->GetValue(i);
+    if (!std::isfinite(h) || h <= -32767.0f)
+    {
+      heights->SetValue(i, lowest == std::numeric_limits<float>::max() ? 0.0f : lowest);
+      ++voids;
+    }
+  }
+  if (voids > 0)
+  {
+    input.Notes.push_back(std::to_string(voids) + " samples without data set to the lowest height");
+  }
+}
+
+// Grids larger than --max-grid are resampled, keeping their extent on the ground.
+void Resample(Input& input, int maximum)
+{
+  int dims[3];
+  input.Heights->GetDimensions(dims);
+  if (std::max(dims[0], dims[1]) <= maximum)
+  {
+    return;
+  }
+  const double shrink = static_cast<double>(maximum) / std::max(dims[0], dims[1]);
+  const int nx = std::max(2, static_cast<int>(std::lround(dims[0] * shrink)));
+  const int ny = std::max(2, static_cast<int>(std::lround(dims[1] * shrink)));
+  vtkNew<vtkImageResize> resize;
+  resize->SetInputData(input.Heights);
+  resize->SetOutputDimensions(nx, ny, 1);
+  resize->Update();
+  input.Heights = resize->GetOutput();
+  input.Heights->GetPointData()->GetScalars()->SetName("Elevation");
+  input.Notes.push_back("resampled from " + std::to_string(dims[0]) + " x " +
+    std::to_string(dims[1]) + " to " + std::to_string(nx) + " x " + std::to_string(ny) +
+    " samples (--max-grid)");
+}
+}
+
+bool LoadInput(const Options& options, MessageCapture& messages, Input& input, std::string& error)
+{
+  const std::string& name = options.Input;
+  if (name.empty())
+  {
+    vtkNew<vtkTerrainRGBReader> fuji;
+    fuji->SetMemoryBuffer(FujiTerrainRGB);
+    fuji->SetMemoryBufferLength(static_cast<vtkIdType>(FujiTerrainRGBSize));
+    const double spacing = options.Spacing > 0.0 ? options.Spacing : 60.0;
+    fuji->SetSpacing(spacing, spacing);
+    messages.Clear();
+    fuji->Update();
+    if (!messages.FirstError().empty())
+    {
+      error = "the embedded Mount Fuji tile cannot be read: " + messages.FirstError();
+      return false;
+    }
+    input.Heights = fuji->GetOutput();
+    std::ostringstream description;
+    description << "Mount Fuji (embedded Terrain-RGB tile), 512 x 512 samples, " << spacing
+                << " m apart";
+    input.Description = description.str();
+  }
+  else
+  {
+    if (!vtksys::SystemTools::FileExists(name))
+    {
+      error = Quoted(name) + " does not exist";
+      return false;
+    }
+    if (vtksys::SystemTools::FileIsDirectory(name))
+    {
+      error = Quoted(name) + " is a directory, not a file";
+      return false;
+    }
+    if (vtksys::SystemTools::FileLength(name) == 0)
+    {
+      error = Quoted(name) + " is empty";
+      return false;
+    }
+    const std::string extension =
+      vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(name));
+    static const std::vector<std::string> meshes = { ".obj", ".ply", ".stl", ".vtp", ".vtk" };
+    static const std::vector<std::string> fields = { ".png", ".tif", ".tiff", ".dem", ".hgt" };
+    if (std::find(meshes.begin(), meshes.end(), extension) != meshes.end())
+    {
+      return LoadMesh(name, extension, messages, input, error);
+    }
+    if (std::find(fields.begin(), fields.end(), extension) == fields.end())
+    {
+      error = Quoted(name) + " has an unknown format" +
+        (extension.empty() ? std::string() : " (" + extension + ")") +
+        "; known: .obj .ply .stl .vtp .vtk .png .tif .tiff .dem .hgt";
+      return false;
+    }
+    if (!LoadHeightField(name, extension, options, messages, input, error))
+    {
+      return false;
+    }
+  }
+  FillVoids(input);
+  Resample(input, options.MaximumGrid);
+  return true;
+}
+}

@@ -1,0 +1,43 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    ApertureRenderInput.h
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+// aperture-render's input: a mesh, or a height field as a 2D grid of heights in metres.
+
+#ifndef ApertureRenderInput_h
+#define ApertureRenderInput_h
+
+#include "vtkImageData.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+
+#include <string>
+#include <vector>
+
+namespace ApertureRender
+{
+struct Options;
+class MessageCapture;
+
+struct Input
+{
+  vtkSmartPointer<vtkPolyData> Mesh;
+  // A height field: a 2D grid whose active scalars, a float array named Elevation, are heights.
+  vtkSmartPointer<vtkImageData> Heights;
+  std::string Description;
+  // What was changed on the way (resampling, filled voids), for the user.
+  std::vector<std::string> Notes;
+};
+
+// Reads the input the options name, or the embedded Mount Fuji tile. Returns false with one
+// sentence in `error` when the input cannot be used.
+bool LoadInput(const Options& options, MessageCapture& messages, Input& input, std::string& error);
+}
+
+#endif

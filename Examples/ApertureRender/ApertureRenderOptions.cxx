@@ -1,0 +1,396 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    ApertureRenderOptions.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "ApertureRenderOptions.h"
+
+#include "vtksys/CommandLineArguments.hxx"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <set>
+#include <sstream>
+
+namespace ApertureRender
+{
+namespace
+{
+// A whole string as a finite number, or false.
+bool ToNumber(const std::string& text, double& value)
+{
+  if (text.empty() || std::isspace(static_cast<unsigned char>(text[0])))
+  {
+    return false;
+  }
+  char* end = nullptr;
+  errno = 0;
+  value = std::strtod(text.c_str(), &end);
+  return errno == 0 && end == text.c_str() + text.size() && std::isfinite(value);
+}
+
+// "a,b,c" as between `least` and `most` numbers.
+bool ToNumbers(const std::string& text, size_t least, size_t most, std::vector<double>& values)
+{
+  values.clear();
+  std::string item;
+  std::istringstream in(text);
+  while (std::getline(in, item, ','))
+  {
+    double value;
+    if (!ToNumber(item, value))
+    {
+      return false;
+    }
+    values.push_back(value);
+  }
+  if (!text.empty() && text.back() == ',')
+  {
+    return false;
+  }
+  return values.size() >= least && values.size() <= most;
+}
+
+std::string Quoted(const std::string& text)
+{
+  return "'" + text + "'";
+}
+}
+
+Options::Options()
+  : CameraAzimuth(std::numeric_limits<double>::quiet_NaN())
+  , CameraElevation(std::numeric_limits<double>::quiet_NaN())
+{
+}
+
+const std::vector<std::string>& ModeNames()
+{
+  static const std::vector<std::string> names = { "exact", "smoothstep", "simplified", "bentnormal",
+    "standard" };
+  return names;
+}
+
+int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
+{
+  std::string output, size, mode, show, sky, rays, cache, saveData, azimuth, elevation, zoom, up,
+    spacing, heightScale, maximumGrid, background;
+  std::vector<std::string> suns, sphereLights;
+  bool interactive = false, help = false, version = false;
+
+  using Arguments = vtksys::CommandLineArguments;
+  Arguments arguments;
+  arguments.Initialize(argc, argv);
+  arguments.StoreUnusedArguments(true);
+  const auto value = Arguments::SPACE_ARGUMENT;
+  arguments.AddArgument("-o", value, &output, "");
+  arguments.AddArgument("--output", value, &output, "");
+  arguments.AddArgument("--size", value, &size, "");
+  arguments.AddBooleanArgument("--interactive", &interactive, "");
+  arguments.AddArgument("--mode", value, &mode, "");
+  arguments.AddArgument("--show", value, &show, "");
+  arguments.AddArgument("--sun", value, &suns, "");
+  arguments.AddArgument("--sphere-light", value, &sphereLights, "");
+  arguments.AddArgument("--sky", value, &sky, "");
+  arguments.AddArgument("--rays", value, &rays, "");
+  arguments.AddArgument("--cache", value, &cache, "");
+  arguments.AddArgument("--save-data", value, &saveData, "");
+  arguments.AddArgument("--azimuth", value, &azimuth, "");
+  arguments.AddArgument("--elevation", value, &elevation, "");
+  arguments.AddArgument("--zoom", value, &zoom, "");
+  arguments.AddArgument("--up", value, &up, "");
+  arguments.AddArgument("--spacing", value, &spacing, "");
+  arguments.AddArgument("--height-scale", value, &heightScale, "");
+  arguments.AddArgument("--max-grid", value, &maximumGrid, "");
+  arguments.AddArgument("--background", value, &background, "");
+  arguments.AddBooleanArgument("--help", &help, "");
+  arguments.AddBooleanArgument("-h", &help, "");
+  arguments.AddBooleanArgument("--version", &version, "");
+
+  // An option that takes a value cannot be the last word.
+  static const std::set<std::string> takesValue = { "-o", "--output", "--size", "--mode", "--show",
+    "--sun", "--sphere-light", "--sky", "--rays", "--cache", "--save-data", "--azimuth",
+    "--elevation", "--zoom", "--up", "--spacing", "--height-scale", "--max-grid", "--background" };
+  if (argc > 1 && takesValue.count(argv[argc - 1]))
+  {
+    error = std::string("option ") + argv[argc - 1] + " needs a value (see --help)";
+    return 2;
+  }
+  if (!arguments.Parse())
+  {
+    error = "the command line could not be parsed (see --help)";
+    return 2;
+  }
+  int unusedCount = 0;
+  char** unused = nullptr;
+  arguments.GetUnusedArguments(&unusedCount, &unused);
+  std::vector<std::string> positional;
+  for (int i = 1; i < unusedCount; ++i) // unused[0] is the program
+  {
+    positional.emplace_back(unused[i]);
+  }
+  arguments.DeleteRemainingArguments(unusedCount, &unused);
+
+  options.Help = help;
+  options.Version = version;
+  if (help || version)
+  {
+    return 0;
+  }
+  for (const std::string& word : positional)
+  {
+    if (word.size() > 1 && word[0] == '-')
+    {
+      error = "unknown option " + Quoted(word) + " (see --help)";
+      return 2;
+    }
+  }
+  if (positional.size() > 1)
+  {
+    error = "one input at a time, got " + Quoted(positional[0]) + " and " + Quoted(positional[1]);
+    return 2;
+  }
+  options.Input = positional.empty() ? "" : positional[0];
+  options.Output = output;
+  options.Interactive = interactive;
+  if (output.empty() && !interactive)
+  {
+    error = "say where the picture goes (-o picture.png) or ask for a window (--interactive)";
+    return 2;
+  }
+
+  std::vector<double> numbers;
+  if (!size.empty())
+  {
+    const size_t x = size.find('x');
+    double w, h;
+    if (x == std::string::npos || !ToNumber(size.substr(0, x), w) ||
+      !ToNumber(size.substr(x + 1), h) || w != std::floor(w) || h != std::floor(h) || w < 16 ||
+      h < 16 || w > 8192 || h > 8192)
+    {
+      error = "--size " + Quoted(size) + " is not WIDTHxHEIGHT in pixels (16 to 8192 each)";
+      return 2;
+    }
+    options.Width = static_cast<int>(w);
+    options.Height = static_cast<int>(h);
+  }
+  if (mode == "all" && size.empty())
+  {
+    // A row of five panels.
+    options.Width = 640;
+    options.Height = 400;
+  }
+  if (!mode.empty())
+  {
+    bool known = mode == "all";
+    for (const std::string& name : ModeNames())
+    {
+      known = known || mode == name;
+    }
+    if (!known)
+    {
+      error = "--mode " + Quoted(mode) +
+        " is not one of exact, smoothstep, simplified, bentnormal, standard, all";
+      return 2;
+    }
+    options.Mode = mode;
+  }
+  if (!show.empty())
+  {
+    if (show != "shading" && show != "apertures")
+    {
+      error = "--show " + Quoted(show) + " is not shading or apertures";
+      return 2;
+    }
+    options.ShowApertures = show == "apertures";
+  }
+  for (const std::string& sun : suns)
+  {
+    if (!ToNumbers(sun, 2, 3, numbers) || numbers[1] < -90.0 || numbers[1] > 90.0 ||
+      (numbers.size() == 3 && (numbers[2] < 0.0 || numbers[2] > 90.0)))
+    {
+      error = "--sun " + Quoted(sun) +
+        " is not AZIMUTH,ELEVATION[,ANGULAR_RADIUS] in degrees (elevation -90 to 90, radius 0 to "
+        "90)";
+      return 2;
+    }
+    options.Suns.push_back({ numbers[0], numbers[1], numbers.size() == 3 ? numbers[2] : 0.27 });
+  }
+  for (const std::string& light : sphereLights)
+  {
+    if (!ToNumbers(light, 4, 5, numbers) || numbers[3] <= 0.0 ||
+      (numbers.size() == 5 && numbers[4] < 0.0))
+    {
+      error = "--sphere-light " + Quoted(light) +
+        " is not X,Y,Z,RADIUS[,INTENSITY] (radius > 0, intensity >= 0)";
+      return 2;
+    }
+    options.SphereLights.push_back({ { numbers[0], numbers[1], numbers[2] }, numbers[3],
+      numbers.size() == 5 ? numbers[4] : 1.0 });
+  }
+  if (!sky.empty())
+  {
+    if (!ToNumbers(sky, 3, 3, numbers) || numbers[0] < 0.0 || numbers[1] < 0.0 || numbers[2] < 0.0)
+    {
+      error = "--sky " + Quoted(sky) + " is not R,G,B (each >= 0)";
+      return 2;
+    }
+    std::copy(numbers.begin(), numbers.end(), options.Sky);
+  }
+  if (!background.empty())
+  {
+    if (!ToNumbers(background, 3, 3, numbers) || numbers[0] < 0.0 || numbers[1] < 0.0 ||
+      numbers[2] < 0.0 || numbers[0] > 1.0 || numbers[1] > 1.0 || numbers[2] > 1.0)
+    {
+      error = "--background " + Quoted(background) + " is not R,G,B (each 0 to 1)";
+      return 2;
+    }
+    std::copy(numbers.begin(), numbers.end(), options.Background);
+  }
+  double number;
+  if (!rays.empty())
+  {
+    if (!ToNumber(rays, number) || number != std::floor(number) || number < 1 || number > 65536)
+    {
+      error = "--rays " + Quoted(rays) + " is not a whole number from 1 to 65536";
+      return 2;
+    }
+    options.Rays = static_cast<int>(number);
+  }
+  if (!maximumGrid.empty())
+  {
+    if (!ToNumber(maximumGrid, number) || number != std::floor(number) || number < 2 ||
+      number > 16384)
+    {
+      error = "--max-grid " + Quoted(maximumGrid) + " is not a whole number from 2 to 16384";
+      return 2;
+    }
+    options.MaximumGrid = static_cast<int>(number);
+  }
+  if (!azimuth.empty() && !ToNumber(azimuth, options.CameraAzimuth))
+  {
+    error = "--azimuth " + Quoted(azimuth) + " is not a number of degrees";
+    return 2;
+  }
+  if (!elevation.empty() &&
+    (!ToNumber(elevation, options.CameraElevation) || std::abs(options.CameraElevation) > 89.0))
+  {
+    error = "--elevation " + Quoted(elevation) + " is not a number of degrees from -89 to 89";
+    return 2;
+  }
+  if (!zoom.empty() && (!ToNumber(zoom, options.Zoom) || options.Zoom <= 0.0))
+  {
+    error = "--zoom " + Quoted(zoom) + " is not a positive number";
+    return 2;
+  }
+  if (!spacing.empty() && (!ToNumber(spacing, options.Spacing) || options.Spacing <= 0.0))
+  {
+    error = "--spacing " + Quoted(spacing) + " is not a positive number of metres";
+    return 2;
+  }
+  if (!heightScale.empty() &&
+    (!ToNumber(heightScale, options.HeightScale) || options.HeightScale <= 0.0))
+  {
+    error = "--height-scale " + Quoted(heightScale) + " is not a positive number";
+    return 2;
+  }
+  if (!up.empty())
+  {
+    static const std::set<std::string> axes = { "+x", "-x", "+y", "-y", "+z", "-z", "x", "y", "z" };
+    if (!axes.count(up))
+    {
+      error = "--up " + Quoted(up) + " is not one of +x, -x, +y, -y, +z, -z";
+      return 2;
+    }
+    options.Up = up.size() == 1 ? "+" + up : up;
+  }
+  if (options.HeightScale == 0.0)
+  {
+    options.HeightScale = options.Input.empty() ? 1.5 : 1.0;
+  }
+  options.Cache = cache;
+  options.SaveData = saveData;
+  return 0;
+}
+
+std::string HelpText()
+{
+  return R"(aperture-render: soft shadows from area lights with ambient aperture lighting.
+
+Usage: aperture-render [INPUT] (-o PICTURE.png | --interactive) [options]
+
+Computes, for every point, the cap of sky it can see (vtkAperturePrecompute, Embree rays), then
+renders the surface with vtkApertureLightingMapper under suns, sphere lights and a sky.
+
+INPUT (optional; without it, the embedded Mount Fuji tile: 512 x 512 samples 60 m apart,
+heights x 1.5):
+  meshes           .obj .ply .stl .vtp .vtk (VTK legacy)
+  height fields    .png: Terrain-RGB (height = -10000 + (R*65536 + G*256 + B) * 0.1 m) when it has
+                   colour, else 8- or 16-bit grey heights; .tif/.tiff grey heights;
+                   .dem (USGS DEM); .hgt (SRTM, 1 or 3 arc-seconds)
+
+Output:
+  -o, --output FILE.png  write the picture
+  --size WxH             picture size in pixels (default 1280x800; with --mode all, each panel)
+  --interactive          open a window: drag to orbit; arrow keys move the sun; m switches the
+                         shading mode; a shows the aperture radius as a colour map; [ and ]
+                         shrink and grow the lights; s toggles the sky; h lists the keys
+  --show apertures       colour the surface by its aperture radius (0: closed, pi/2: a whole
+                         hemisphere of sky) instead of shading it (default: --show shading)
+  --save-data FILE       write the data with its aperture arrays for ParaView: .vtp (the
+                         surface) or, for height fields, .vti (the grid)
+
+Lights and shading:
+  --sun AZ,EL[,R]        a sun at compass azimuth AZ (0 north, 90 east) and elevation EL above
+                         the horizon, angular radius R (default 0.27, the real sun), in degrees;
+                         repeatable. Default: one sun, low in the west-north-west (AZ 285, EL 16)
+                         for height fields; upper left, in front, for meshes (AZ 225, EL 45)
+  --sphere-light X,Y,Z,R[,I]
+                         a sphere light of radius R at (X, Y, Z) in data coordinates, intensity I
+                         (default 1: the light an unoccluded surface facing it receives);
+                         repeatable
+  --sky R,G,B            sky radiance filling the open part of each aperture (default
+                         0.24,0.27,0.34; 0,0,0 for none)
+  --mode MODE            exact (default), smoothstep, simplified, bentnormal, standard (plain VTK
+                         lighting), or all: one picture with a panel per mode
+  --rays N               rays per point for the apertures (default 256)
+  --cache FILE           keep the apertures in FILE (.vtp for meshes, .vti for height fields):
+                         the next run with the same input and --rays reads them instead of
+                         casting rays; a cache made for other data is recomputed and replaced
+
+View:
+  --azimuth DEG          compass azimuth of the eye seen from the data (default 195, from the
+                         south-south-west, for height fields; 180, the front, for meshes)
+  --elevation DEG        elevation of the eye (default 28 for height fields, 15 for meshes)
+  --zoom F               magnify by F (default 1)
+  --up AXIS              the data's up axis: +x -x +y -y +z -z (default +z for height fields,
+                         +y for meshes); azimuths and elevations are measured around it
+  --background R,G,B     background colour, 0 to 1 (default 0.09,0.1,0.12)
+
+Height fields:
+  --spacing METRES       ground distance between samples (default: from a .dem or .hgt file, 60
+                         for the embedded tile, else 30)
+  --height-scale F       vertical exaggeration (default 1; 1.5 for the embedded tile)
+  --max-grid N           resample larger grids to at most N x N samples (default 1024)
+
+  -h, --help             this text
+  --version              the version
+
+Examples:
+  aperture-render -o fuji.png
+  aperture-render -o fuji-dawn.png --sun 95,6 --sky 0.25,0.2,0.3 --mode smoothstep
+  aperture-render bunny.obj -o bunny.png --sphere-light 0.1,0.2,0.15,0.03,1.5 --sun 0,90
+  aperture-render N35E138.hgt --cache n35e138.vti --interactive
+  aperture-render scan.ply --mode all --size 480x360 -o modes.png --save-data scan.vtp
+
+Exit status: 0 on success, 1 when the input cannot be used or the picture cannot be made, 2 for
+a malformed command line. Errors are one line on stderr.
+)";
+}
+}

@@ -1,0 +1,489 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    ApertureRenderView.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "ApertureRenderView.h"
+
+#include "ApertureRenderDisplay.h"
+#include "ApertureRenderInput.h"
+#include "ApertureRenderMessages.h"
+
+#include "vtkActor.h"
+#include "vtkApertureLightingMapper.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkImageAppend.h"
+#include "vtkImageData.h"
+#include "vtkImageDataGeometryFilter.h"
+#include "vtkInteractorStyleTrackballCamera.h"
+#include "vtkLight.h"
+#include "vtkMath.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPNGWriter.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderWindowInteractor.h"
+#include "vtkRenderer.h"
+#include "vtkScalarBarActor.h"
+#include "vtkTextActor.h"
+#include "vtkTextProperty.h"
+#include "vtkWarpScalar.h"
+#include "vtkWindowToImageFilter.h"
+#include "vtkXMLImageDataWriter.h"
+#include "vtkXMLPolyDataWriter.h"
+#include "vtksys/SystemTools.hxx"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+
+namespace ApertureRender
+{
+namespace
+{
+const char* const ModeLabels[] = { "Exact", "Smoothstep", "Simplified", "Bent normal",
+  "Standard VTK" };
+
+double Radians(double degrees)
+{
+  return vtkMath::RadiansFromDegrees(degrees);
+}
+}
+
+View::View(const Options& options, const Input& input, vtkDataObject* apertures)
+  : Settings(options)
+  , HeightField(input.Heights != nullptr)
+  , Apertures(apertures)
+{
+  const std::vector<std::string>& names = ModeNames();
+  this->Mode = options.Mode == "all"
+    ? 0
+    : static_cast<int>(std::find(names.begin(), names.end(), options.Mode) - names.begin());
+
+  if (this->HeightField)
+  {
+    // The grid's surface, raised as vtkAperturePrecompute raised it; point data (the apertures)
+    // come along.
+    vtkNew<vtkImageDataGeometryFilter> grid;
+    grid->SetInputData(apertures);
+    vtkNew<vtkWarpScalar> warp;
+    warp->SetInputConnection(grid->GetOutputPort());
+    warp->SetScaleFactor(options.HeightScale);
+    warp->UseNormalOn();
+    warp->SetNormal(0.0, 0.0, 1.0);
+    vtkNew<vtkPolyDataNormals> normals;
+    normals->SetInputConnection(warp->GetOutputPort());
+    normals->SplittingOff();
+    normals->Update();
+    this->Surface = normals->GetOutput();
+  }
+  else
+  {
+    this->Surface = vtkPolyData::SafeDownCast(apertures);
+  }
+  double bounds[6];
+  this->Surface->GetBounds(bounds);
+  for (int k = 0; k < 3; ++k)
+  {
+    this->Center[k] = 0.5 * (bounds[2 * k] + bounds[2 * k + 1]);
+  }
+  this->SetUpAxes(
+    options.Up.empty() ? (this->HeightField ? std::string("+z") : std::string("+y")) : options.Up);
+
+  this->Mapper->SetInputData(this->Surface);
+  this->Mapper->SetShadingMode(this->Mode);
+  this->Mapper->SetSkyColor(options.Sky[0], options.Sky[1], options.Sky[2]);
+  this->Mapper->SetSkyIntensity(1.0);
+  // Meshes that bring their own RGB colours (PLY scans) keep them; other arrays are not colours.
+  vtkDataArray* scalars = this->Surface->GetPointData()->GetScalars();
+  const bool colours = !this->HeightField && scalars &&
+    scalars->GetDataType() == VTK_UNSIGNED_CHAR &&
+    (scalars->GetNumberOfComponents() == 3 || scalars->GetNumberOfComponents() == 4);
+  this->Mapper->SetScalarVisibility(colours);
+  this->Mapper->SetColorModeToDirectScalars();
+  this->Actor->SetMapper(this->Mapper);
+  vtkProperty* property = this->Actor->GetProperty();
+  if (this->HeightField)
+  {
+    property->SetColor(0.92, 0.87, 0.8);
+  }
+  else
+  {
+    property->SetColor(0.9, 0.86, 0.8);
+    property->SetSpecular(0.15);
+    property->SetSpecularPower(24.0);
+  }
+  this->Renderer->AddActor(this->Actor);
+  this->Renderer->SetBackground(options.Background);
+  this->AddLights();
+  this->PlaceCamera();
+
+  const int fontSize = std::max(12, options.Height / 22);
+  this->Label->GetTextProperty()->SetFontSize(fontSize);
+  this->Label->GetTextProperty()->SetColor(0.95, 0.95, 0.95);
+  this->Label->SetPosition(0.6 * fontSize, options.Height - 1.8 * fontSize);
+  this->Label->SetVisibility(options.Mode == "all");
+  this->Renderer->AddActor2D(this->Label);
+  this->Status->GetTextProperty()->SetFontSize(std::max(12, fontSize * 2 / 3));
+  this->Status->GetTextProperty()->SetColor(0.85, 0.85, 0.85);
+  this->Status->SetPosition(8, 8);
+  this->Status->SetVisibility(false);
+  this->Renderer->AddActor2D(this->Status);
+  this->Legend->SetTitle("aperture radius (rad)");
+  this->Legend->SetNumberOfLabels(5);
+  this->Legend->SetLabelFormat("%.2f");
+  this->Legend->UnconstrainedFontSizeOn();
+  this->Legend->SetMaximumWidthInPixels(std::max(60, options.Width / 10));
+  for (vtkTextProperty* text :
+    { this->Legend->GetLabelTextProperty(), this->Legend->GetTitleTextProperty() })
+  {
+    text->SetFontSize(std::max(11, options.Height / 36));
+    text->ItalicOff();
+    text->BoldOff();
+    text->ShadowOff();
+  }
+  this->Legend->SetVisibility(false);
+  this->Renderer->AddActor2D(this->Legend);
+
+  this->ShowApertureData(options.ShowApertures);
+  this->Window->AddRenderer(this->Renderer);
+  this->Window->SetSize(options.Width, options.Height);
+  this->Window->SetMultiSamples(0);
+  this->Window->SetWindowName("aperture-render");
+}
+
+View::~View()
+{
+  // The window goes before the display connection it uses.
+  this->Window->Finalize();
+  CloseDisplay(this->Display);
+}
+
+void View::SetUpAxes(const std::string& up)
+{
+  // East x north = up, with east +x unless up is along x.
+  const int axis = up[1] - 'x';
+  const double sign = up[0] == '-' ? -1.0 : 1.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    this->Up[k] = k == axis ? sign : 0.0;
+    this->East[k] = k == (axis == 0 ? 1 : 0) ? 1.0 : 0.0;
+  }
+  vtkMath::Cross(this->Up, this->East, this->North);
+}
+
+void View::Direction(double azimuth, double elevation, double direction[3]) const
+{
+  const double a = Radians(azimuth), e = Radians(elevation);
+  for (int k = 0; k < 3; ++k)
+  {
+    direction[k] = std::cos(e) * (std::sin(a) * this->East[k] + std::cos(a) * this->North[k]) +
+      std::sin(e) * this->Up[k];
+  }
+}
+
+void View::AddLights()
+{
+  this->SunAngles = this->Settings.Suns;
+  if (this->SunAngles.empty() && this->Settings.SphereLights.empty())
+  {
+    this->SunAngles.push_back(
+      this->HeightField ? Sun{ 285.0, 16.0, 0.27 } : Sun{ 225.0, 45.0, 0.27 });
+  }
+  for (const Sun& angles : this->SunAngles)
+  {
+    auto sun = vtkSmartPointer<vtkLight>::New();
+    sun->SetLightTypeToSceneLight();
+    sun->SetPositional(false);
+    sun->SetColor(1.0, 0.97, 0.92);
+    vtkApertureLightingMapper::SetLightRadius(sun, Radians(angles.Radius));
+    this->Suns.push_back(sun);
+    this->Renderer->AddLight(sun);
+  }
+  for (const SphereLight& sphere : this->Settings.SphereLights)
+  {
+    auto lamp = vtkSmartPointer<vtkLight>::New();
+    lamp->SetLightTypeToSceneLight();
+    lamp->SetPositional(true);
+    lamp->SetConeAngle(180.0);
+    lamp->SetPosition(sphere.Position[0], sphere.Position[1], sphere.Position[2]);
+    lamp->SetFocalPoint(this->Center);
+    lamp->SetIntensity(sphere.Intensity);
+    vtkApertureLightingMapper::SetLightRadius(lamp, sphere.Radius);
+    this->Lamps.push_back(lamp);
+    this->Renderer->AddLight(lamp);
+  }
+  // Place the suns.
+  for (size_t i = 0; i < this->Suns.size(); ++i)
+  {
+    double d[3];
+    this->Direction(this->SunAngles[i].Azimuth, this->SunAngles[i].Elevation, d);
+    this->Suns[i]->SetFocalPoint(this->Center);
+    this->Suns[i]->SetPosition(
+      this->Center[0] + d[0], this->Center[1] + d[1], this->Center[2] + d[2]);
+  }
+}
+
+void View::PlaceCamera()
+{
+  const bool field = this->HeightField;
+  const double azimuth = std::isnan(this->Settings.CameraAzimuth) ? (field ? 200.0 : 180.0)
+                                                                  : this->Settings.CameraAzimuth;
+  const double elevation = std::isnan(this->Settings.CameraElevation)
+    ? (field ? 28.0 : 15.0)
+    : this->Settings.CameraElevation;
+  double d[3];
+  this->Direction(azimuth, elevation, d);
+  vtkCamera* camera = this->Renderer->GetActiveCamera();
+  camera->SetFocalPoint(this->Center);
+  camera->SetPosition(this->Center[0] + d[0], this->Center[1] + d[1], this->Center[2] + d[2]);
+  camera->SetViewUp(this->Up);
+  this->Renderer->ResetCamera();
+  camera->Zoom((field ? 2.1 : 1.15) * this->Settings.Zoom);
+  this->Renderer->ResetCameraClippingRange();
+}
+
+bool View::Open(std::string& error)
+{
+  this->Display = OpenDisplay(error);
+  if (!this->Display)
+  {
+    return false;
+  }
+  this->Window->SetDisplayId(this->Display);
+  this->Window->SetOffScreenRendering(!this->Settings.Interactive);
+  if (!this->Window->SupportsOpenGL())
+  {
+    error = "the OpenGL of this display is too old: vtkApertureLightingMapper needs OpenGL 3.2";
+    return false;
+  }
+  return true;
+}
+
+vtkSmartPointer<vtkImageData> View::Grab()
+{
+  this->Window->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(this->Window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->DeepCopy(grab->GetOutput());
+  return image;
+}
+
+bool View::WritePicture(const std::string& path, MessageCapture& messages, std::string& error)
+{
+  messages.Clear();
+  vtkNew<vtkPNGWriter> writer;
+  vtkNew<vtkImageAppend> row;
+  if (this->Settings.Mode == "all")
+  {
+    row->SetAppendAxis(0);
+    for (int mode = 0; mode < static_cast<int>(ModeNames().size()); ++mode)
+    {
+      this->SetMode(mode);
+      this->Label->SetInput(ModeLabels[mode]);
+      row->AddInputData(this->Grab());
+    }
+    row->Update();
+    writer->SetInputConnection(row->GetOutputPort());
+  }
+  else
+  {
+    writer->SetInputData(this->Grab());
+  }
+  if (!messages.FirstError().empty())
+  {
+    error = "rendering failed: " + messages.FirstError();
+    return false;
+  }
+  writer->SetFileName(path.c_str());
+  writer->Write();
+  if (!messages.FirstError().empty() || !vtksys::SystemTools::FileExists(path, true))
+  {
+    error = "cannot write '" + path + "'" +
+      (messages.FirstError().empty() ? std::string() : ": " + messages.FirstError());
+    return false;
+  }
+  return true;
+}
+
+bool View::WriteData(const std::string& path, MessageCapture& messages, std::string& error)
+{
+  const std::string extension =
+    vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(path));
+  messages.Clear();
+  int written = 0;
+  if (extension == ".vti")
+  {
+    vtkNew<vtkXMLImageDataWriter> writer;
+    writer->SetInputData(this->Apertures);
+    writer->SetFileName(path.c_str());
+    written = writer->Write();
+  }
+  else
+  {
+    vtkNew<vtkXMLPolyDataWriter> writer;
+    writer->SetInputData(this->Surface);
+    writer->SetFileName(path.c_str());
+    written = writer->Write();
+  }
+  if (!written || !messages.FirstError().empty())
+  {
+    error = "cannot write '" + path + "'" +
+      (messages.FirstError().empty() ? std::string() : ": " + messages.FirstError());
+    return false;
+  }
+  return true;
+}
+
+void View::SetMode(int mode)
+{
+  this->Mode = mode;
+  this->Mapper->SetShadingMode(this->DataShown ? vtkApertureLightingInterface::STANDARD : mode);
+}
+
+void View::ShowApertureData(bool show)
+{
+  // The aperture radius as a colour map, from closed (dark blue) to a whole hemisphere (yellow),
+  // over standard lighting so that the colours read true.
+  this->DataShown = show;
+  if (show)
+  {
+    vtkNew<vtkColorTransferFunction> colours;
+    colours->AddRGBPoint(0.0, 0.27, 0.0, 0.33);
+    colours->AddRGBPoint(0.4, 0.23, 0.32, 0.55);
+    colours->AddRGBPoint(0.8, 0.13, 0.57, 0.55);
+    colours->AddRGBPoint(1.2, 0.37, 0.79, 0.38);
+    colours->AddRGBPoint(0.5 * vtkMath::Pi(), 0.99, 0.91, 0.14);
+    this->Mapper->SetLookupTable(colours);
+    this->Mapper->SetScalarModeToUsePointFieldData();
+    this->Mapper->SelectColorArray("ApertureRadius");
+    this->Mapper->SetColorModeToMapScalars();
+    this->Mapper->SetScalarRange(0.0, 0.5 * vtkMath::Pi());
+    this->Mapper->ScalarVisibilityOn();
+    this->Legend->SetLookupTable(colours);
+    // Mostly ambient, so that the colours read true under any sun.
+    this->Actor->GetProperty()->SetAmbient(0.6);
+    this->Actor->GetProperty()->SetDiffuse(0.5);
+  }
+  else
+  {
+    this->Actor->GetProperty()->SetAmbient(0.0);
+    this->Actor->GetProperty()->SetDiffuse(1.0);
+    this->Mapper->SetScalarModeToDefault();
+    this->Mapper->SetColorModeToDirectScalars();
+    vtkDataArray* scalars = this->Surface->GetPointData()->GetScalars();
+    this->Mapper->SetScalarVisibility(!this->HeightField && scalars &&
+      scalars->GetDataType() == VTK_UNSIGNED_CHAR && scalars->GetNumberOfComponents() >= 3);
+  }
+  this->Legend->SetVisibility(show);
+  this->SetMode(this->Mode);
+}
+
+void View::UpdateStatus()
+{
+  std::ostringstream status;
+  status << (this->DataShown ? "aperture radius" : ModeLabels[this->Mode]);
+  if (!this->SunAngles.empty())
+  {
+    status << "  |  sun " << this->SunAngles[0].Azimuth << " deg, " << this->SunAngles[0].Elevation
+           << " deg up, radius " << this->SunAngles[0].Radius << " deg";
+  }
+  status << "  |  keys: arrows sun, m mode, a apertures, [ ] light size, s sky, h help";
+  this->Status->SetInput(status.str().c_str());
+}
+
+void View::OnKey(vtkObject* caller, unsigned long, void* clientData, void*)
+{
+  auto* view = static_cast<View*>(clientData);
+  const std::string key = static_cast<vtkRenderWindowInteractor*>(caller)->GetKeySym();
+  Sun* sun = view->SunAngles.empty() ? nullptr : &view->SunAngles[0];
+  if (sun && (key == "Left" || key == "Right"))
+  {
+    sun->Azimuth = std::fmod(sun->Azimuth + (key == "Left" ? -10.0 : 10.0) + 360.0, 360.0);
+  }
+  else if (sun && (key == "Up" || key == "Down"))
+  {
+    sun->Elevation = std::min(90.0, std::max(-10.0, sun->Elevation + (key == "Up" ? 3.0 : -3.0)));
+  }
+  else if (key == "m")
+  {
+    view->SetMode((view->Mode + 1) % static_cast<int>(ModeNames().size()));
+  }
+  else if (key == "a")
+  {
+    view->ShowApertureData(!view->DataShown);
+  }
+  else if (key == "bracketleft" || key == "bracketright")
+  {
+    const double factor = key == "bracketleft" ? 1.0 / 1.5 : 1.5;
+    for (Sun& s : view->SunAngles)
+    {
+      s.Radius = std::min(60.0, s.Radius * factor);
+    }
+    for (vtkLight* lamp : view->Lamps)
+    {
+      vtkApertureLightingMapper::SetLightRadius(
+        lamp, vtkApertureLightingMapper::GetLightRadius(lamp) * factor);
+    }
+  }
+  else if (key == "s")
+  {
+    view->Mapper->SetSkyIntensity(view->Mapper->GetSkyIntensity() > 0.0 ? 0.0 : 1.0);
+  }
+  else if (key == "h")
+  {
+    std::cout << "Keys: Left/Right turn the first sun, Up/Down raise or lower it; m next shading "
+                 "mode; a aperture radius as colours; [ and ] shrink or grow the lights; s sky "
+                 "on or off; r reset the camera; q quit.\n";
+  }
+  else
+  {
+    return;
+  }
+  for (size_t i = 0; i < view->Suns.size(); ++i)
+  {
+    double d[3];
+    view->Direction(view->SunAngles[i].Azimuth, view->SunAngles[i].Elevation, d);
+    view->Suns[i]->SetPosition(
+      view->Center[0] + d[0], view->Center[1] + d[1], view->Center[2] + d[2]);
+    vtkApertureLightingMapper::SetLightRadius(view->Suns[i], Radians(view->SunAngles[i].Radius));
+  }
+  view->UpdateStatus();
+  view->Window->Render();
+}
+
+void View::Interact()
+{
+  this->Label->SetVisibility(false);
+  this->Status->SetVisibility(true);
+  this->UpdateStatus();
+  vtkNew<vtkRenderWindowInteractor> interactor;
+  interactor->SetRenderWindow(this->Window);
+  vtkNew<vtkInteractorStyleTrackballCamera> style;
+  interactor->SetInteractorStyle(style);
+  vtkNew<vtkCallbackCommand> keys;
+  keys->SetClientData(this);
+  keys->SetCallback(&View::OnKey);
+  interactor->AddObserver(vtkCommand::KeyPressEvent, keys);
+  this->Window->Render();
+  interactor->Start();
+}
+}

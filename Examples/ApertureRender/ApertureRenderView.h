@@ -1,0 +1,99 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    ApertureRenderView.h
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+// aperture-render's picture: the shaded surface, its lights and camera, written to a PNG or
+// shown in a window.
+
+#ifndef ApertureRenderView_h
+#define ApertureRenderView_h
+
+#include "ApertureRenderOptions.h"
+
+#include "vtkNew.h"
+#include "vtkSmartPointer.h"
+
+#include <string>
+#include <vector>
+
+class vtkActor;
+class vtkApertureLightingMapper;
+class vtkDataObject;
+class vtkImageData;
+class vtkLight;
+class vtkObject;
+class vtkPolyData;
+class vtkRenderWindow;
+class vtkRenderer;
+class vtkScalarBarActor;
+class vtkTextActor;
+
+namespace ApertureRender
+{
+struct Input;
+class MessageCapture;
+
+class View
+{
+public:
+  // The surface of `apertures` (the precompute's output for `input`) in a window of the
+  // options' size, not yet shown.
+  View(const Options& options, const Input& input, vtkDataObject* apertures);
+  ~View();
+  View(const View&) = delete;
+  View& operator=(const View&) = delete;
+
+  // Opens the OpenGL context; false with one sentence in `error` when there is no X display or
+  // the OpenGL it offers is too old.
+  bool Open(std::string& error);
+
+  // Writes the picture (a row of panels for --mode all) as a PNG.
+  bool WritePicture(const std::string& path, MessageCapture& messages, std::string& error);
+
+  // Writes the data with its arrays: .vtp the surface, .vti a height field's grid.
+  bool WriteData(const std::string& path, MessageCapture& messages, std::string& error);
+
+  // Runs the window until the user closes it.
+  void Interact();
+
+private:
+  // The data's compass: unit east, north and up vectors.
+  void SetUpAxes(const std::string& up);
+  void Direction(double azimuth, double elevation, double direction[3]) const;
+  void AddLights();
+  void PlaceCamera();
+  void SetMode(int mode);
+  void ShowApertureData(bool show);
+  void UpdateStatus();
+  vtkSmartPointer<vtkImageData> Grab();
+  static void OnKey(vtkObject* caller, unsigned long, void* clientData, void*);
+
+  Options Settings;
+  void* Display = nullptr; // the X11 connection, see ApertureRenderDisplay.h
+  bool HeightField;
+  vtkSmartPointer<vtkDataObject> Apertures;
+  vtkSmartPointer<vtkPolyData> Surface;
+  double Center[3];
+  double East[3], North[3], Up[3];
+  int Mode = 0;
+  bool DataShown = false;
+  std::vector<vtkSmartPointer<vtkLight>> Suns;
+  std::vector<Sun> SunAngles;
+  std::vector<vtkSmartPointer<vtkLight>> Lamps;
+  vtkNew<vtkApertureLightingMapper> Mapper;
+  vtkNew<vtkActor> Actor;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkTextActor> Label;
+  vtkNew<vtkTextActor> Status;
+  vtkNew<vtkScalarBarActor> Legend;
+};
+}
+
+#endif
