@@ -342,8 +342,8 @@ int vtkAperturePrecompute::RequestData(
   }
 
   // One local origin for everything keeps single precision where the geometry is.
-  double bounds[6] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX,
-    VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  double bounds[6];
+  vtkApertureSurface::InitializeBounds(bounds);
   for (const auto& r : receivers)
   {
     if (auto* image = vtkImageData::SafeDownCast(r->Input))
@@ -359,11 +359,8 @@ int vtkAperturePrecompute::RequestData(
   {
     vtkApertureSurface::ExpandBounds(occluder, bounds);
   }
-  double origin[3] = { 0.0, 0.0, 0.0 };
-  for (int k = 0; k < 3 && bounds[0] <= bounds[1]; ++k)
-  {
-    origin[k] = 0.5 * (bounds[2 * k] + bounds[2 * k + 1]);
-  }
+  double origin[3];
+  vtkApertureSurface::OriginOf(bounds, origin);
 
   std::string error;
   for (const auto& r : receivers)

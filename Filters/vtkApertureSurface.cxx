@@ -90,6 +90,25 @@ struct Grid
 }
 
 //------------------------------------------------------------------------------
+void vtkApertureSurface::InitializeBounds(double bounds[6])
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    bounds[2 * k] = VTK_DOUBLE_MAX;
+    bounds[2 * k + 1] = -VTK_DOUBLE_MAX;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureSurface::OriginOf(const double bounds[6], double origin[3])
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    origin[k] = bounds[0] <= bounds[1] ? 0.5 * (bounds[2 * k] + bounds[2 * k + 1]) : 0.0;
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkApertureSurface::ExpandBounds(vtkPolyData* input, double bounds[6])
 {
   vtkPoints* points = input->GetPoints();

@@ -43,13 +43,20 @@ class VTKAPERTURELIGHTING_EXPORT vtkApertureSurface
 public:
   ///@{
   /**
-   * Grows bounds (xmin, xmax, ymin, ymax, zmin, zmax) by the finite points of a dataset, so that
-   * all surfaces of a scene can share one local origin.
+   * Grows bounds (xmin, xmax, ymin, ymax, zmin, zmax), which InitializeBounds() makes empty, by
+   * the finite points of a dataset, so that all surfaces of a scene can share one local origin.
    */
+  static void InitializeBounds(double bounds[6]);
   static void ExpandBounds(vtkPolyData* input, double bounds[6]);
   static void ExpandBounds(
     vtkImageData* input, vtkDataArray* heights, double heightScale, double bounds[6]);
   ///@}
+
+  /**
+   * The local origin of a scene: the centre of its bounds (0 for empty bounds). Single precision
+   * is kept where the geometry is, even at UTM-sized coordinates.
+   */
+  static void OriginOf(const double bounds[6], double origin[3]);
 
   /**
    * Builds the surface from the polygons and strips of a polydata. Point normals are taken from

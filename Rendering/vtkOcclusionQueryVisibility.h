@@ -1,0 +1,199 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    vtkOcclusionQueryVisibility.h
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+/**
+ * @class   vtkOcclusionQueryVisibility
+ * @brief   per-vertex visibility of a lightsphere of directions (Sattler et al. 2004)
+ *
+ * For each direction l_j of a vtkLightSphere (level 0 to 4: k = 6 to 1026) and each point i of
+ * the input, whether the point sees the far-away sky in that direction: the direction is above
+ * the point's tangent plane (n_i · l_j > 0) and nothing blocks it. The result is the paper's
+ * visibility matrix, stored as point data:
+ *
+ * - `Visibility` (float, k components): M_ij = max(n_i · l_j, 0) when point i sees direction j,
+ *   else 0, so that the irradiance from an environment of radiance L_j is Σ_j M_ij L_j w_j;
+ * - `VisibilityBits` (optional, a vtkBitArray of k components): the raw visibility, 32 times
+ *   smaller than `Visibility`;
+ * - field data `LightDirections` (k × 3) and `LightWeights` (k solid angles, summing to 4π).
+ *
+ * The output is the input with these arrays added (and `Normals` when the input had none,
+ * computed as vtkAperturePrecompute computes them); the input is never modified.
+ * Input port 1 takes occluders (repeatable): polydata that cast shadows but get no output.
+ *
+ * Backends:
+ * - OCCLUSION_QUERY, the paper's method: per direction, an orthographic depth render with
+ *   polygon offset, then every point drawn inside its own GL_ANY_SAMPLES_PASSED occlusion query,
+ *   queries issued in batches and read asynchronously;
+ * - DEPTH_COMPARE (default), the fast path: one render for a direction and its opposite (the
+ *   nearest and the farthest surface of each texel, offset as the polygon offset would), then one
+ *   draw of all points whose vertex shader makes the same depth test for both and sets each
+ *   point's bits in a shader storage buffer (OpenGL 4.3);
+ * - RAY_CAST: Embree rays from each point (offset along its normal by RayOffset times its mean
+ *   edge length), for machines without OpenGL and as the reference.
+ *
+ * The OpenGL backends use the render window given to SetRenderWindow() (sharing its context),
+ * or else their own off-screen window. The directions of a level are a prefix of those of the
+ * next level, so raising the level on an input already computed only renders the new directions
+ * (GetNumberOfDepthPasses() counts what the last update rendered).
+ *
+ * Progress events fire between directions and an abort stops the computation there. A missing
+ * OpenGL feature, or no OpenGL context at all, is an error that names what is missing; RAY_CAST
+ * still works.
+ *
+ * @sa vtkLightSphere vtkAperturePrecompute
+ */
+
+#ifndef vtkOcclusionQueryVisibility_h
+#define vtkOcclusionQueryVisibility_h
+
+#include "vtkApertureLightingModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <cstdint> // For std::uint64_t
+#include <memory>  // For std::unique_ptr
+#include <vector>  // For std::vector
+
+class vtkRenderWindow;
+class vtkVisibilityRenderer;
+class vtkWindow;
+
+class VTKAPERTURELIGHTING_EXPORT vtkOcclusionQueryVisibility : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkOcclusionQueryVisibility* New();
+  vtkTypeMacro(vtkOcclusionQueryVisibility, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Backends
+  {
+    OCCLUSION_QUERY = 0,
+    DEPTH_COMPARE = 1,
+    RAY_CAST = 2
+  };
+
+  ///@{
+  /**
+   * Lightsphere level, clamped to [0, 4]: k = 6, 18, 66, 258, 1026 directions. Default 2.
+   */
+  vtkSetClampMacro(Level, int, 0, 4);
+  vtkGetMacro(Level, int);
+  ///@}
+
+  ///@{
+  /**
+   * How visibility is computed. Default DEPTH_COMPARE.
+   */
+  vtkSetClampMacro(Backend, int, OCCLUSION_QUERY, RAY_CAST);
+  vtkGetMacro(Backend, int);
+  void SetBackendToOcclusionQuery() { this->SetBackend(OCCLUSION_QUERY); }
+  void SetBackendToDepthCompare() { this->SetBackend(DEPTH_COMPARE); }
+  void SetBackendToRayCast() { this->SetBackend(RAY_CAST); }
+  const char* GetBackendAsString();
+  ///@}
+
+  ///@{
+  /**
+   * Side of the square depth texture of the OpenGL backends, clamped to [16, 8192]. The scene's
+   * bounding sphere spans it, so a texel covers 2R/n. Default 1024.
+   */
+  vtkSetClampMacro(DepthResolution, int, 16, 8192);
+  vtkGetMacro(DepthResolution, int);
+  ///@}
+
+  ///@{
+  /**
+   * glPolygonOffset(factor, units) of the depth pass, which keeps a surface from hiding its own
+   * vertices. Default (1, 1), as in the paper.
+   */
+  vtkSetMacro(PolygonOffsetFactor, float);
+  vtkGetMacro(PolygonOffsetFactor, float);
+  vtkSetMacro(PolygonOffsetUnits, float);
+  vtkGetMacro(PolygonOffsetUnits, float);
+  ///@}
+
+  ///@{
+  /**
+   * RAY_CAST: rays start this many mean edge lengths above their point, along its normal.
+   * Clamped to [0, 1]. Default 0.001.
+   */
+  vtkSetClampMacro(RayOffset, double, 0.0, 1.0);
+  vtkGetMacro(RayOffset, double);
+  ///@}
+
+  ///@{
+  /**
+   * Which arrays to produce: `Visibility` (default on) and `VisibilityBits` (default off).
+   */
+  vtkSetMacro(ComputeVisibility, bool);
+  vtkGetMacro(ComputeVisibility, bool);
+  vtkBooleanMacro(ComputeVisibility, bool);
+  vtkSetMacro(ComputeVisibilityBits, bool);
+  vtkGetMacro(ComputeVisibilityBits, bool);
+  vtkBooleanMacro(ComputeVisibilityBits, bool);
+  ///@}
+
+  ///@{
+  /**
+   * A render window whose OpenGL context the OpenGL backends share. Without one they open
+   * their own off-screen window.
+   */
+  void SetRenderWindow(vtkRenderWindow* window);
+  vtkGetObjectMacro(RenderWindow, vtkRenderWindow);
+  ///@}
+
+  /**
+   * Adds an occluder on port 1: it casts shadows but gets no visibility.
+   */
+  void AddOccluderConnection(vtkAlgorithmOutput* occluder);
+
+  /**
+   * Depth passes (OpenGL backends; DEPTH_COMPARE renders a direction and its opposite in one
+   * pass) or directions cast (RAY_CAST) in the last update; directions reused from an earlier
+   * update are not counted.
+   */
+  vtkGetMacro(NumberOfDepthPasses, int);
+
+  /**
+   * Releases the OpenGL resources held in the window's context.
+   */
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+protected:
+  vtkOcclusionQueryVisibility();
+  ~vtkOcclusionQueryVisibility() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  int Level = 2;
+  int Backend = DEPTH_COMPARE;
+  int DepthResolution = 1024;
+  float PolygonOffsetFactor = 1.0f;
+  float PolygonOffsetUnits = 1.0f;
+  double RayOffset = 0.001;
+  bool ComputeVisibility = true;
+  bool ComputeVisibilityBits = false;
+  vtkRenderWindow* RenderWindow = nullptr;
+  int NumberOfDepthPasses = 0;
+
+private:
+  vtkOcclusionQueryVisibility(const vtkOcclusionQueryVisibility&) = delete;
+  void operator=(const vtkOcclusionQueryVisibility&) = delete;
+
+  // Visibility computed so far (one bit set of points per direction, in lightsphere order) and
+  // what it was computed for, so that a higher level adds only its new directions.
+  std::vector<std::vector<std::uint64_t>> Computed;
+  std::vector<vtkMTimeType> ComputedFor;
+  vtkRenderWindow* OwnWindow = nullptr;
+  std::unique_ptr<vtkVisibilityRenderer> Renderer;
+};
+
+#endif

@@ -1,0 +1,725 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    vtkVisibilityRenderer.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkVisibilityRenderer.h"
+
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+namespace
+{
+// Receivers' queries in flight: one batch is issued while the previous one is read.
+constexpr int QueryBatch = 16384;
+// Directions whose bits share the storage buffer before it is read back.
+constexpr int CompareBatch = 64;
+
+const char* const DepthVS = R"(//VTK::System::Dec
+in vec3 vertexMC;
+uniform mat4 lightMatrix;
+void main()
+{
+  gl_Position = lightMatrix * vec4(vertexMC, 1.0);
+}
+)";
+
+// Depth only: nothing to shade.
+const char* const DepthFS = R"(//VTK::System::Dec
+void main()
+{
+}
+)";
+
+// DepthCompare's depth pass, for a direction and its opposite at once: the nearest and the
+// farthest surface in each texel (blending with GL_MIN and GL_MAX), each pushed away from its
+// light by the offset glPolygonOffset(factor, units) gives a depth pass.
+const char* const PairVS = R"(#version 430 core
+in vec3 vertexMC;
+uniform mat4 lightMatrix;
+void main()
+{
+  gl_Position = lightMatrix * vec4(vertexMC, 1.0);
+}
+)";
+
+const char* const PairFS = R"(#version 430 core
+uniform float offsetFactor;
+uniform float offsetUnits;
+layout(location = 0) out float nearest;
+layout(location = 1) out float farthest;
+void main()
+{
+  // The polygon's largest depth slope and the resolution of a 32-bit float depth near z, as
+  // glPolygonOffset takes them.
+  float z = gl_FragCoord.z;
+  float slope = max(abs(dFdx(z)), abs(dFdy(z)));
+  float resolution = exp2(floor(log2(max(z, 1e-30))) - 23.0);
+  float offset = offsetFactor * slope + offsetUnits * resolution;
+  nearest = z + offset;
+  farthest = z - offset;
+}
+)";
+
+// The depth test of the occlusion-query pass, in a vertex shader: the point's window depth
+// against the texel it rasterises to, nearer than the nearest surface for the direction (the
+// GL_LESS test), farther than the farthest for its opposite, seen from the same side (the
+// opposite direction's orthographic view is this one mirrored, on the same texel centres).
+const char* const CompareVS = R"(#version 430 core
+in vec3 vertexMC;
+uniform mat4 lightMatrix;
+uniform sampler2D nearestMap;
+uniform sampler2D farthestMap;
+uniform int resolution;
+uniform int slot;
+uniform int opposite;
+uniform int words;
+layout(std430, binding = 0) buffer Visibility { uint bits[]; };
+void main()
+{
+  vec4 clip = lightMatrix * vec4(vertexMC, 1.0);
+  vec3 ndc = clip.xyz / clip.w;
+  ivec2 texel = ivec2(floor((ndc.xy * 0.5 + 0.5) * float(resolution)));
+  float depth = ndc.z * 0.5 + 0.5;
+  uint bit = 1u << uint(gl_VertexID % 32);
+  int word = gl_VertexID / 32;
+  if (all(greaterThanEqual(texel, ivec2(0))) && all(lessThan(texel, ivec2(resolution))))
+  {
+    if (depth < texelFetch(nearestMap, texel, 0).r)
+    {
+      atomicOr(bits[slot * words + word], bit);
+    }
+    if (opposite >= 0 && depth > texelFetch(farthestMap, texel, 0).r)
+    {
+      atomicOr(bits[opposite * words + word], bit);
+    }
+  }
+  gl_Position = vec4(0.0, 0.0, 0.0, 1.0);
+}
+)";
+
+const char* const CompareFS = R"(#version 430 core
+out vec4 color;
+void main()
+{
+  color = vec4(1.0);
+}
+)";
+
+// Column-major orthographic projection along -direction of the sphere of `radius` around the
+// origin: x and y across the direction, depth increasing away from the light.
+void LightMatrix(const std::array<double, 3>& l, double radius, float m[16])
+{
+  // Any unit vector across l, then the third axis.
+  const double helper[3] = { std::abs(l[0]) < 0.6 ? 1.0 : 0.0, std::abs(l[0]) < 0.6 ? 0.0 : 1.0,
+    0.0 };
+  double r[3] = { l[1] * helper[2] - l[2] * helper[1], l[2] * helper[0] - l[0] * helper[2],
+    l[0] * helper[1] - l[1] * helper[0] };
+  const double rn = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+  for (double& c : r)
+  {
+    c /= rn;
+  }
+  const double u[3] = { l[1] * r[2] - l[2] * r[1], l[2] * r[0] - l[0] * r[2],
+    l[0] * r[1] - l[1] * r[0] };
+  const double s = 1.0 / radius;
+  const float rows[4][4] = { { float(s * r[0]), float(s * r[1]), float(s * r[2]), 0.0f },
+    { float(s * u[0]), float(s * u[1]), float(s * u[2]), 0.0f },
+    { float(-s * l[0]), float(-s * l[1]), float(-s * l[2]), 0.0f }, { 0.0f, 0.0f, 0.0f, 1.0f } };
+  for (int row = 0; row < 4; ++row)
+  {
+    for (int column = 0; column < 4; ++column)
+    {
+      m[4 * column + row] = rows[row][column];
+    }
+  }
+}
+
+// The depth pass's state, restored when the object goes.
+struct PassState
+{
+  explicit PassState(vtkOpenGLState* state)
+    : Viewport(state)
+    , DepthMask(state)
+    , ColorMask(state)
+    , DepthFunc(state)
+    , DepthTest(state, GL_DEPTH_TEST)
+    , CullFace(state, GL_CULL_FACE)
+    , Blend(state, GL_BLEND)
+    , Scissor(state, GL_SCISSOR_TEST)
+    , Offset(state, GL_POLYGON_OFFSET_FILL)
+  {
+    glGetFloatv(GL_POLYGON_OFFSET_FACTOR, &this->Factor);
+    glGetFloatv(GL_POLYGON_OFFSET_UNITS, &this->Units);
+    state->vtkglEnable(GL_DEPTH_TEST);
+    state->vtkglDisable(GL_CULL_FACE);
+    state->vtkglDisable(GL_BLEND);
+    state->vtkglDisable(GL_SCISSOR_TEST);
+    state->vtkglDepthFunc(GL_LESS);
+    state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  }
+  ~PassState() { glPolygonOffset(this->Factor, this->Units); }
+
+  vtkOpenGLState::ScopedglViewport Viewport;
+  vtkOpenGLState::ScopedglDepthMask DepthMask;
+  vtkOpenGLState::ScopedglColorMask ColorMask;
+  vtkOpenGLState::ScopedglDepthFunc DepthFunc;
+  vtkOpenGLState::ScopedglEnableDisable DepthTest, CullFace, Blend, Scissor, Offset;
+  float Factor = 0.0f, Units = 0.0f;
+};
+}
+
+//------------------------------------------------------------------------------
+vtkVisibilityRenderer::vtkVisibilityRenderer() = default;
+
+//------------------------------------------------------------------------------
+vtkVisibilityRenderer::~vtkVisibilityRenderer()
+{
+  this->ReleaseGraphicsResources(this->Window);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkVisibilityRenderer::Missing(bool depthCompare)
+{
+  if (depthCompare)
+  {
+    return GLEW_VERSION_4_3 ? std::string()
+                            : "OpenGL 4.3 (shader storage buffers and atomic operations)";
+  }
+  return GLEW_VERSION_3_3 || GLEW_ARB_occlusion_query2
+    ? std::string()
+    : "OpenGL 3.3 occlusion queries (GL_ANY_SAMPLES_PASSED)";
+}
+
+//------------------------------------------------------------------------------
+bool vtkVisibilityRenderer::SetScene(vtkOpenGLRenderWindow* window,
+  const std::vector<float>& points, const std::vector<std::uint32_t>& triangles,
+  vtkIdType receivers, double radius, int resolution, float factor, float units, std::string& error)
+{
+  if (this->Window != window)
+  {
+    this->ReleaseGraphicsResources(this->Window);
+    this->Window = window;
+  }
+  window->MakeCurrent();
+  this->NumberOfReceivers = receivers;
+  this->NumberOfTriangles = static_cast<vtkIdType>(triangles.size() / 3);
+  this->Radius = radius;
+  this->Resolution = resolution;
+  this->OffsetFactor = factor;
+  this->OffsetUnits = units;
+  this->DepthPasses = 0;
+
+  if (!this->Points)
+  {
+    this->Points = vtkOpenGLBufferObject::New();
+    this->Points->SetType(vtkOpenGLBufferObject::ArrayBuffer);
+    this->Triangles = vtkOpenGLBufferObject::New();
+    this->Triangles->SetType(vtkOpenGLBufferObject::ElementArrayBuffer);
+  }
+  if (!this->Points->Upload(points, vtkOpenGLBufferObject::ArrayBuffer) ||
+    !this->Triangles->Upload(triangles, vtkOpenGLBufferObject::ElementArrayBuffer))
+  {
+    error = "the scene could not be uploaded to the GPU (" + this->Points->GetError() + ")";
+    return false;
+  }
+
+  vtkOpenGLShaderCache* cache = window->GetShaderCache();
+  if (!this->DepthProgram)
+  {
+    this->DepthProgram = cache->ReadyShaderProgram(DepthVS, DepthFS, "");
+    if (!this->DepthProgram)
+    {
+      error = "the depth shader did not compile";
+      return false;
+    }
+    this->DepthProgram->Register(nullptr);
+  }
+  if (!this->DepthVAO)
+  {
+    this->DepthVAO = vtkOpenGLVertexArrayObject::New();
+  }
+  cache->ReadyShaderProgram(this->DepthProgram);
+  this->DepthVAO->Bind();
+  const bool bound = this->DepthVAO->AddAttributeArray(
+    this->DepthProgram, this->Points, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
+  this->Triangles->Bind();
+  this->DepthVAO->Release();
+  if (!bound)
+  {
+    error = "the scene's points could not be bound to the depth shader";
+    return false;
+  }
+
+  if (!this->Depth || this->Depth->GetWidth() != static_cast<unsigned int>(resolution))
+  {
+    if (this->Depth)
+    {
+      this->Depth->ReleaseGraphicsResources(window);
+      this->Depth->Delete();
+    }
+    this->Depth = vtkTextureObject::New();
+    this->Depth->SetContext(window);
+    this->Depth->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->Depth->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->Depth->SetWrapS(vtkTextureObject::ClampToEdge);
+    this->Depth->SetWrapT(vtkTextureObject::ClampToEdge);
+    if (!this->Depth->AllocateDepth(resolution, resolution, vtkTextureObject::Float32))
+    {
+      error = "a " + std::to_string(resolution) + "^2 depth texture could not be allocated";
+      return false;
+    }
+    if (!this->Framebuffer)
+    {
+      this->Framebuffer = vtkOpenGLFramebufferObject::New();
+      this->Framebuffer->SetContext(window);
+    }
+    vtkOpenGLState* state = window->GetState();
+    state->PushFramebufferBindings();
+    this->Framebuffer->Bind();
+    this->Framebuffer->AddDepthAttachment(this->Depth);
+    this->Framebuffer->DeactivateDrawBuffers();
+    this->Framebuffer->DeactivateReadBuffer();
+    const char* status = nullptr;
+    const bool complete = vtkOpenGLFramebufferObject::GetFrameBufferStatus(GL_FRAMEBUFFER, status);
+    state->PopFramebufferBindings();
+    if (!complete)
+    {
+      error = std::string("the depth framebuffer is incomplete (") + (status ? status : "") + ")";
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkVisibilityRenderer::RenderDepth(const std::array<double, 3>& direction, float matrix[16])
+{
+  LightMatrix(direction, this->Radius, matrix);
+  vtkOpenGLState* state = this->Window->GetState();
+  this->Window->GetShaderCache()->ReadyShaderProgram(this->DepthProgram);
+  this->DepthProgram->SetUniformMatrix4x4("lightMatrix", matrix);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglClearDepth(1.0);
+  state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(this->OffsetFactor, this->OffsetUnits);
+  this->DepthVAO->Bind();
+  this->Triangles->Bind();
+  glDrawElements(
+    GL_TRIANGLES, static_cast<GLsizei>(3 * this->NumberOfTriangles), GL_UNSIGNED_INT, nullptr);
+  this->DepthVAO->Release();
+  ++this->DepthPasses;
+}
+
+//------------------------------------------------------------------------------
+bool vtkVisibilityRenderer::OcclusionQuery(const std::vector<std::array<double, 3>>& directions,
+  std::vector<Bits>& visible, std::string& error)
+{
+  if (!this->Window || !this->DepthProgram)
+  {
+    error = "no scene";
+    return false;
+  }
+  this->Window->MakeCurrent();
+  vtkOpenGLState* state = this->Window->GetState();
+  if (this->Queries.empty())
+  {
+    this->Queries.resize(2 * QueryBatch);
+    glGenQueries(static_cast<GLsizei>(this->Queries.size()), this->Queries.data());
+  }
+  const vtkIdType n = this->NumberOfReceivers;
+  state->PushFramebufferBindings();
+  {
+    PassState pass(state);
+    this->Framebuffer->Bind();
+    state->vtkglViewport(0, 0, this->Resolution, this->Resolution);
+    float matrix[16];
+    for (const auto& direction : directions)
+    {
+      this->RenderDepth(direction, matrix);
+      // Points test against the depth, without writing it (the paper's second pass).
+      state->vtkglDepthMask(GL_FALSE);
+      Bits bits((n + 63) / 64, 0);
+      this->DepthVAO->Bind();
+      // Batches of queries: issue one, then read the one before, so that the GPU is not waited
+      // for query by query.
+      auto read = [&](vtkIdType first, vtkIdType count, const unsigned int* ids)
+      {
+        for (vtkIdType i = 0; i < count; ++i)
+        {
+          GLuint passed = 0;
+          glGetQueryObjectuiv(ids[i], GL_QUERY_RESULT, &passed);
+          if (passed)
+          {
+            bits[(first + i) / 64] |= std::uint64_t(1) << ((first + i) % 64);
+          }
+        }
+      };
+      vtkIdType pendingFirst = 0, pendingCount = 0;
+      const unsigned int* pendingIds = nullptr;
+      for (vtkIdType first = 0, batch = 0; first < n; first += QueryBatch, ++batch)
+      {
+        const vtkIdType count = std::min<vtkIdType>(QueryBatch, n - first);
+        const unsigned int* ids = this->Queries.data() + (batch % 2) * QueryBatch;
+        for (vtkIdType i = 0; i < count; ++i)
+        {
+          glBeginQuery(GL_ANY_SAMPLES_PASSED, ids[i]);
+          glDrawArrays(GL_POINTS, static_cast<GLint>(first + i), 1);
+          glEndQuery(GL_ANY_SAMPLES_PASSED);
+        }
+        if (pendingIds)
+        {
+          read(pendingFirst, pendingCount, pendingIds);
+        }
+        pendingFirst = first;
+        pendingCount = count;
+        pendingIds = ids;
+      }
+      if (pendingIds)
+      {
+        read(pendingFirst, pendingCount, pendingIds);
+      }
+      this->DepthVAO->Release();
+      visible.push_back(std::move(bits));
+    }
+  }
+  state->PopFramebufferBindings();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkVisibilityRenderer::DepthCompare(const std::vector<std::array<double, 3>>& directions,
+  std::vector<Bits>& visible, std::string& error, const std::function<bool(size_t)>& progress)
+{
+  if (!this->Window || !this->DepthProgram)
+  {
+    error = "no scene";
+    return false;
+  }
+  this->Window->MakeCurrent();
+  if (!this->PreparePairs(error))
+  {
+    return false;
+  }
+  vtkOpenGLState* state = this->Window->GetState();
+  vtkOpenGLShaderCache* cache = this->Window->GetShaderCache();
+
+  // Each direction with its opposite, when the list has it (a lightsphere always does).
+  std::vector<std::pair<size_t, long>> pairs;
+  std::vector<bool> taken(directions.size(), false);
+  for (size_t i = 0; i < directions.size(); ++i)
+  {
+    if (taken[i])
+    {
+      continue;
+    }
+    long opposite = -1;
+    for (size_t j = i + 1; j < directions.size() && opposite < 0; ++j)
+    {
+      const auto& a = directions[i];
+      const auto& b = directions[j];
+      if (!taken[j] && a[0] * b[0] + a[1] * b[1] + a[2] * b[2] < -1.0 + 1e-12)
+      {
+        opposite = static_cast<long>(j);
+        taken[j] = true;
+      }
+    }
+    taken[i] = true;
+    pairs.emplace_back(i, opposite);
+  }
+
+  const vtkIdType n = this->NumberOfReceivers;
+  const int words = static_cast<int>((n + 31) / 32);
+  if (!this->Storage)
+  {
+    glGenBuffers(1, &this->Storage);
+  }
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Storage);
+  const std::vector<std::uint32_t> zeros(static_cast<size_t>(words) * CompareBatch, 0u);
+  glBufferData(
+    GL_SHADER_STORAGE_BUFFER, zeros.size() * sizeof(std::uint32_t), nullptr, GL_DYNAMIC_READ);
+
+  std::vector<Bits> results(directions.size());
+  size_t done = 0;
+  bool stopped = false;
+  state->PushFramebufferBindings();
+  {
+    PassState pass(state);
+    vtkOpenGLState::ScopedglBlendFuncSeparate blendFunction(state);
+    GLint equationRGB = GL_FUNC_ADD, equationAlpha = GL_FUNC_ADD;
+    glGetIntegerv(GL_BLEND_EQUATION_RGB, &equationRGB);
+    glGetIntegerv(GL_BLEND_EQUATION_ALPHA, &equationAlpha);
+    state->vtkglViewport(0, 0, this->Resolution, this->Resolution);
+    std::vector<std::uint32_t> result(zeros.size());
+    float matrix[16];
+    for (size_t first = 0; first < pairs.size() && !stopped;)
+    {
+      // As many pairs as the storage buffer has slots for.
+      std::vector<std::pair<size_t, long>> batch;
+      size_t slots = 0;
+      while (first < pairs.size() && slots + (pairs[first].second >= 0 ? 2 : 1) <= CompareBatch)
+      {
+        slots += pairs[first].second >= 0 ? 2 : 1;
+        batch.push_back(pairs[first++]);
+      }
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Storage);
+      glBufferSubData(
+        GL_SHADER_STORAGE_BUFFER, 0, zeros.size() * sizeof(std::uint32_t), zeros.data());
+      std::vector<std::pair<size_t, int>> slotOf; // direction, slot
+      int slot = 0;
+      for (const auto& pair : batch)
+      {
+        // Nearest and farthest surfaces along the direction.
+        LightMatrix(directions[pair.first], this->Radius, matrix);
+        this->PairFramebuffer->Bind();
+        this->PairFramebuffer->ActivateDrawBuffers(2);
+        cache->ReadyShaderProgram(this->PairProgram);
+        this->PairProgram->SetUniformMatrix4x4("lightMatrix", matrix);
+        this->PairProgram->SetUniformf("offsetFactor", this->OffsetFactor);
+        this->PairProgram->SetUniformf("offsetUnits", this->OffsetUnits);
+        state->vtkglDisable(GL_DEPTH_TEST);
+        state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        const float far = 1.0f, near = 0.0f;
+        glClearBufferfv(GL_COLOR, 0, &far);
+        glClearBufferfv(GL_COLOR, 1, &near);
+        state->vtkglEnable(GL_BLEND);
+        state->vtkglBlendFunc(GL_ONE, GL_ONE);
+        glBlendEquationi(0, GL_MIN);
+        glBlendEquationi(1, GL_MAX);
+        this->PairVAO->Bind();
+        this->Triangles->Bind();
+        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(3 * this->NumberOfTriangles),
+          GL_UNSIGNED_INT, nullptr);
+        this->PairVAO->Release();
+        glBlendEquationSeparate(equationRGB, equationAlpha);
+        state->vtkglDisable(GL_BLEND);
+        state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        ++this->DepthPasses;
+
+        // The test, nothing rasterised.
+        state->PopFramebufferBindings();
+        state->PushFramebufferBindings();
+        const int opposite = pair.second >= 0 ? slot + 1 : -1;
+        cache->ReadyShaderProgram(this->CompareProgram);
+        this->Nearest->Activate();
+        this->Farthest->Activate();
+        this->CompareProgram->SetUniformi("nearestMap", this->Nearest->GetTextureUnit());
+        this->CompareProgram->SetUniformi("farthestMap", this->Farthest->GetTextureUnit());
+        this->CompareProgram->SetUniformMatrix4x4("lightMatrix", matrix);
+        this->CompareProgram->SetUniformi("resolution", this->Resolution);
+        this->CompareProgram->SetUniformi("slot", slot);
+        this->CompareProgram->SetUniformi("opposite", opposite);
+        this->CompareProgram->SetUniformi("words", words);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->Storage);
+        glEnable(GL_RASTERIZER_DISCARD);
+        this->CompareVAO->Bind();
+        glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(n));
+        this->CompareVAO->Release();
+        glDisable(GL_RASTERIZER_DISCARD);
+        this->Farthest->Deactivate();
+        this->Nearest->Deactivate();
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+        slotOf.emplace_back(pair.first, slot);
+        if (pair.second >= 0)
+        {
+          slotOf.emplace_back(static_cast<size_t>(pair.second), slot + 1);
+        }
+        slot += pair.second >= 0 ? 2 : 1;
+      }
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Storage);
+      glGetBufferSubData(
+        GL_SHADER_STORAGE_BUFFER, 0, result.size() * sizeof(std::uint32_t), result.data());
+      for (const auto& entry : slotOf)
+      {
+        Bits bits((n + 63) / 64, 0);
+        const std::uint32_t* row = result.data() + entry.second * words;
+        for (int w = 0; w < words; ++w)
+        {
+          bits[w / 2] |= std::uint64_t(row[w]) << (32 * (w % 2));
+        }
+        results[entry.first] = std::move(bits);
+      }
+      done += slotOf.size();
+      stopped = progress && !progress(done);
+    }
+  }
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  state->PopFramebufferBindings();
+  if (stopped)
+  {
+    error = "stopped";
+    return false;
+  }
+  for (Bits& bits : results)
+  {
+    visible.push_back(std::move(bits));
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkVisibilityRenderer::PreparePairs(std::string& error)
+{
+  vtkOpenGLShaderCache* cache = this->Window->GetShaderCache();
+  auto ready = [&](vtkShaderProgram*& program, vtkOpenGLVertexArrayObject*& vao, const char* vs,
+                 const char* fs, const char* what)
+  {
+    if (program)
+    {
+      return true;
+    }
+    program = cache->ReadyShaderProgram(vs, fs, "");
+    if (!program)
+    {
+      error = std::string("the ") + what + " shader did not compile";
+      return false;
+    }
+    program->Register(nullptr);
+    vao = vtkOpenGLVertexArrayObject::New();
+    vao->Bind();
+    const bool bound = vao->AddAttributeArray(
+      program, this->Points, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
+    vao->Release();
+    if (!bound)
+    {
+      error = std::string("the scene's points could not be bound to the ") + what + " shader";
+    }
+    return bound;
+  };
+  if (!ready(this->PairProgram, this->PairVAO, PairVS, PairFS, "nearest-and-farthest") ||
+    !ready(this->CompareProgram, this->CompareVAO, CompareVS, CompareFS, "depth-compare"))
+  {
+    return false;
+  }
+  if (this->Nearest && this->Nearest->GetWidth() == static_cast<unsigned int>(this->Resolution))
+  {
+    return true;
+  }
+  for (vtkTextureObject** texture : { &this->Nearest, &this->Farthest })
+  {
+    if (*texture)
+    {
+      (*texture)->ReleaseGraphicsResources(this->Window);
+      (*texture)->Delete();
+    }
+    *texture = vtkTextureObject::New();
+    (*texture)->SetContext(this->Window);
+    (*texture)->SetMinificationFilter(vtkTextureObject::Nearest);
+    (*texture)->SetMagnificationFilter(vtkTextureObject::Nearest);
+    (*texture)->SetWrapS(vtkTextureObject::ClampToEdge);
+    (*texture)->SetWrapT(vtkTextureObject::ClampToEdge);
+    if (!(*texture)->Allocate2D(this->Resolution, this->Resolution, 1, VTK_FLOAT))
+    {
+      error = "a " + std::to_string(this->Resolution) + "^2 float texture could not be allocated";
+      return false;
+    }
+  }
+  if (!this->PairFramebuffer)
+  {
+    this->PairFramebuffer = vtkOpenGLFramebufferObject::New();
+    this->PairFramebuffer->SetContext(this->Window);
+  }
+  vtkOpenGLState* state = this->Window->GetState();
+  state->PushFramebufferBindings();
+  this->PairFramebuffer->Bind();
+  this->PairFramebuffer->AddColorAttachment(0, this->Nearest);
+  this->PairFramebuffer->AddColorAttachment(1, this->Farthest);
+  this->PairFramebuffer->ActivateDrawBuffers(2);
+  const char* status = nullptr;
+  const bool complete = vtkOpenGLFramebufferObject::GetFrameBufferStatus(GL_FRAMEBUFFER, status);
+  state->PopFramebufferBindings();
+  if (!complete)
+  {
+    error = std::string("the nearest-and-farthest framebuffer is incomplete (") +
+      (status ? status : "") + ")";
+  }
+  return complete;
+}
+
+//------------------------------------------------------------------------------
+void vtkVisibilityRenderer::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (!this->Window || window != this->Window)
+  {
+    return;
+  }
+  // GL objects die with a context that is gone; only a live one is asked to delete them.
+  const bool live = this->Window->GetGenericContext() != nullptr;
+  if (live)
+  {
+    this->Window->MakeCurrent();
+  }
+  if (live && !this->Queries.empty())
+  {
+    glDeleteQueries(static_cast<GLsizei>(this->Queries.size()), this->Queries.data());
+  }
+  if (live && this->Storage)
+  {
+    glDeleteBuffers(1, &this->Storage);
+  }
+  this->Queries.clear();
+  this->Storage = 0;
+  for (vtkShaderProgram** program :
+    { &this->DepthProgram, &this->PairProgram, &this->CompareProgram })
+  {
+    if (*program)
+    {
+      (*program)->UnRegister(nullptr);
+      *program = nullptr;
+    }
+  }
+  for (vtkOpenGLVertexArrayObject** vao : { &this->DepthVAO, &this->PairVAO, &this->CompareVAO })
+  {
+    if (*vao)
+    {
+      (*vao)->ReleaseGraphicsResources();
+      (*vao)->Delete();
+      *vao = nullptr;
+    }
+  }
+  for (vtkOpenGLBufferObject** buffer : { &this->Points, &this->Triangles })
+  {
+    if (*buffer)
+    {
+      (*buffer)->ReleaseGraphicsResources();
+      (*buffer)->Delete();
+      *buffer = nullptr;
+    }
+  }
+  for (vtkOpenGLFramebufferObject** framebuffer : { &this->Framebuffer, &this->PairFramebuffer })
+  {
+    if (*framebuffer)
+    {
+      (*framebuffer)->ReleaseGraphicsResources(window);
+      (*framebuffer)->Delete();
+      *framebuffer = nullptr;
+    }
+  }
+  for (vtkTextureObject** texture : { &this->Depth, &this->Nearest, &this->Farthest })
+  {
+    if (*texture)
+    {
+      (*texture)->ReleaseGraphicsResources(window);
+      (*texture)->Delete();
+      *texture = nullptr;
+    }
+  }
+  this->Window = nullptr;
+}

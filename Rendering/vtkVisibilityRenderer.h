@@ -1,0 +1,130 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    vtkVisibilityRenderer.h
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+/**
+ * @class   vtkVisibilityRenderer
+ * @brief   OpenGL passes of vtkOcclusionQueryVisibility (private)
+ *
+ * Holds a scene (points in local coordinates, triangles) on the GPU and answers, for one light
+ * direction at a time, which of the first NumberOfReceivers points are visible from it:
+ *
+ * - every direction starts with a depth pass: the triangles rendered orthographically along
+ *   the direction into a square depth texture, with polygon offset;
+ * - OcclusionQuery then draws each receiver as a point inside its own GL_ANY_SAMPLES_PASSED
+ *   query (Sattler et al. 2004), issuing a batch of queries before reading the previous batch;
+ * - DepthCompare renders a direction and its opposite in one pass (the nearest and the farthest
+ *   surface of each texel, by GL_MIN and GL_MAX blending, offset as glPolygonOffset would),
+ *   then draws all receivers at once: the vertex shader projects each one, makes the occlusion
+ *   pass's depth test against the texel it falls on, for both directions, and sets its bits in a
+ *   shader storage buffer, which is read back once per batch of directions.
+ *
+ * GL state is changed through vtkOpenGLState and restored. The owner releases the resources
+ * (ReleaseGraphicsResources()) while the window's context exists; the destructor does it too.
+ */
+
+#ifndef vtkVisibilityRenderer_h
+#define vtkVisibilityRenderer_h
+
+#include "vtkApertureLightingModule.h" // For export macro
+#include "vtkType.h"
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+class vtkOpenGLBufferObject;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLRenderWindow;
+class vtkOpenGLVertexArrayObject;
+class vtkShaderProgram;
+class vtkTextureObject;
+class vtkWindow;
+
+class VTKAPERTURELIGHTING_EXPORT vtkVisibilityRenderer
+{
+public:
+  vtkVisibilityRenderer();
+  ~vtkVisibilityRenderer();
+  vtkVisibilityRenderer(const vtkVisibilityRenderer&) = delete;
+  vtkVisibilityRenderer& operator=(const vtkVisibilityRenderer&) = delete;
+
+  /// One bit per receiver, 64 receivers per word.
+  using Bits = std::vector<std::uint64_t>;
+
+  /**
+   * What the window's OpenGL lacks for a backend (depthCompare: the shader storage buffers of
+   * OpenGL 4.3; otherwise the GL_ANY_SAMPLES_PASSED queries of OpenGL 3.3); empty if nothing.
+   * The window's context must be current.
+   */
+  static std::string Missing(bool depthCompare);
+
+  /**
+   * Uploads a scene: points (x, y, z each; local coordinates within `radius` of the origin)
+   * and triangles (three point ids each). The first `receivers` points are the ones tested.
+   * The depth texture is resolution x resolution, rendered with glPolygonOffset(factor, units).
+   */
+  bool SetScene(vtkOpenGLRenderWindow* window, const std::vector<float>& points,
+    const std::vector<std::uint32_t>& triangles, vtkIdType receivers, double radius, int resolution,
+    float factor, float units, std::string& error);
+
+  /**
+   * Visibility of the receivers from each direction (unit vectors toward the light), one bit set
+   * of receivers per direction, by occlusion queries or by depth comparison in a shader.
+   * DepthCompare reports the directions done after each batch to `progress`, and stops (false,
+   * error "stopped") when it returns false.
+   */
+  bool OcclusionQuery(const std::vector<std::array<double, 3>>& directions,
+    std::vector<Bits>& visible, std::string& error);
+  bool DepthCompare(const std::vector<std::array<double, 3>>& directions,
+    std::vector<Bits>& visible, std::string& error,
+    const std::function<bool(size_t done)>& progress = nullptr);
+
+  /**
+   * Depth passes rendered since the scene was set.
+   */
+  int GetNumberOfDepthPasses() const { return this->DepthPasses; }
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+private:
+  // Renders the depth pass for a direction; `matrix` gets its column-major projection.
+  void RenderDepth(const std::array<double, 3>& direction, float matrix[16]);
+  // Shaders, textures and framebuffer of DepthCompare's paired depth pass.
+  bool PreparePairs(std::string& error);
+
+  vtkOpenGLRenderWindow* Window = nullptr;
+  vtkOpenGLBufferObject* Points = nullptr;
+  vtkOpenGLBufferObject* Triangles = nullptr;
+  vtkOpenGLVertexArrayObject* DepthVAO = nullptr;
+  vtkOpenGLVertexArrayObject* PairVAO = nullptr;
+  vtkOpenGLVertexArrayObject* CompareVAO = nullptr;
+  vtkOpenGLFramebufferObject* Framebuffer = nullptr;
+  vtkOpenGLFramebufferObject* PairFramebuffer = nullptr;
+  vtkTextureObject* Depth = nullptr;
+  vtkTextureObject* Nearest = nullptr;
+  vtkTextureObject* Farthest = nullptr;
+  vtkShaderProgram* DepthProgram = nullptr;
+  vtkShaderProgram* PairProgram = nullptr;
+  vtkShaderProgram* CompareProgram = nullptr;
+  std::vector<unsigned int> Queries;
+  unsigned int Storage = 0;
+  vtkIdType NumberOfTriangles = 0;
+  vtkIdType NumberOfReceivers = 0;
+  double Radius = 1.0;
+  int Resolution = 1024;
+  float OffsetFactor = 1.0f;
+  float OffsetUnits = 1.0f;
+  int DepthPasses = 0;
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkVisibilityRenderer.h
