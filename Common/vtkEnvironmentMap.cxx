@@ -1,0 +1,639 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    vtkEnvironmentMap.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkEnvironmentMap.h"
+
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkMath.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkSMPTools.h"
+
+#include <algorithm>
+#include <cmath>
+
+vtkStandardNewMacro(vtkEnvironmentMap);
+
+namespace
+{
+constexpr double Pi = vtkMath::Pi();
+// The working image.
+constexpr int WorkingWidth = 256;
+constexpr int WorkingHeight = 128;
+
+// North, east and up of each up axis (see the class documentation).
+void Frame(int up, double north[3], double east[3], double zenith[3])
+{
+  static const double frames[3][3][3] = { { { 0, 0, 1 }, { 0, 1, 0 }, { 1, 0, 0 } },
+    { { 0, 0, -1 }, { 1, 0, 0 }, { 0, 1, 0 } }, { { 0, 1, 0 }, { 1, 0, 0 }, { 0, 0, 1 } } };
+  for (int k = 0; k < 3; ++k)
+  {
+    north[k] = frames[up][0][k];
+    east[k] = frames[up][1][k];
+    zenith[k] = frames[up][2][k];
+  }
+}
+
+// The nine real spherical harmonics of order 2 at a unit direction.
+void Harmonics(const double d[3], double y[9])
+{
+  const double x = d[0], yy = d[1], z = d[2];
+  y[0] = 0.28209479177387814;
+  y[1] = 0.4886025119029199 * yy;
+  y[2] = 0.4886025119029199 * z;
+  y[3] = 0.4886025119029199 * x;
+  y[4] = 1.0925484305920792 * x * yy;
+  y[5] = 1.0925484305920792 * yy * z;
+  y[6] = 0.31539156525252005 * (3.0 * z * z - 1.0);
+  y[7] = 1.0925484305920792 * x * z;
+  y[8] = 0.5462742152960396 * (x * x - yy * yy);
+}
+}
+
+//------------------------------------------------------------------------------
+vtkEnvironmentMap::vtkEnvironmentMap()
+{
+  this->FilterTime.Modified();
+  std::fill(&this->SH[0][0], &this->SH[0][0] + 27, 0.0);
+}
+
+//------------------------------------------------------------------------------
+vtkEnvironmentMap::~vtkEnvironmentMap()
+{
+  this->SetImage(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkEnvironmentMap::SetImage(vtkImageData* image)
+{
+  if (this->Image != image)
+  {
+    vtkImageData* previous = this->Image;
+    this->Image = image;
+    if (image)
+    {
+      image->Register(this);
+    }
+    if (previous)
+    {
+      previous->UnRegister(this);
+    }
+    this->FilterTime.Modified();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkEnvironmentMap::SetBlurAngle(double sigma)
+{
+  sigma = std::min(std::max(sigma, 0.0), 1.0);
+  if (this->BlurAngle != sigma)
+  {
+    this->BlurAngle = sigma;
+    this->FilterTime.Modified();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkEnvironmentMap::SetOrientation(const double rotation[9])
+{
+  if (!std::equal(rotation, rotation + 9, this->Orientation))
+  {
+    std::copy(rotation, rotation + 9, this->Orientation);
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkEnvironmentMap::GetOrientation(double rotation[9])
+{
+  std::copy(this->Orientation, this->Orientation + 9, rotation);
+}
+
+//------------------------------------------------------------------------------
+void vtkEnvironmentMap::Local(double u, double v, double d[3])
+{
+  const double phi = 2.0 * Pi * (u - 0.5), theta = Pi * (v - 0.5);
+  d[0] = std::cos(theta) * std::cos(phi);
+  d[1] = std::cos(theta) * std::sin(phi);
+  d[2] = std::sin(theta);
+}
+
+//------------------------------------------------------------------------------
+void vtkEnvironmentMap::LocalToImagePoint(const double d[3], double& u, double& v)
+{
+  u = std::atan2(d[1], d[0]) / (2.0 * Pi) + 0.5;
+  v = std::asin(std::min(1.0, std::max(-1.0, d[2]))) / Pi + 0.5;
+}
+
+//------------------------------------------------------------------------------
+void vtkEnvironmentMap::GetWorldToEnvironment(double matrix[9])
+{
+  // local = O^T Rz(azimuth)^T F^T world, F = [north east up].
+  double north[3], east[3], up[3];
+  Frame(this->UpAxis, north, east, up);
+  const double a = vtkMath::RadiansFromDegrees(this->Azimuth);
+  const double c = std::cos(a), s = std::sin(a);
+  // Rz^T F^T: rows (c N + s E), (-s N + c E), U.
+  double rows[3][3];
+  for (int k = 0; k < 3; ++k)
+  {
+    rows[0][k] = c * north[k] + s * east[k];
+    rows[1][k] = -s * north[k] + c * east[k];
+    rows[2][k] = up[k];
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      // (O^T)_ij = O_ji.
+      matrix[3 * i + k] = this->Orientation[0 + i] * rows[0][k] +
+        this->Orientation[3 + i] * rows[1][k] + this->Orientation[6 + i] * rows[2][k];
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkEnvironmentMap::ToLocal(const double world[3], double local[3])
+{
+  double m[9];
+  this->GetWorldToEnvironment(m);
+  for (int i = 0; i < 3; ++i)
+  {
+    local[i] = m[3 * i] * world[0] + m[3 * i + 1] * world[1] + m[3 * i + 2] * world[2];
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkEnvironmentMap::ToWorld(const double local[3], double world[3])
+{
+  // The matrix is orthogonal: its transpose goes back.
+  double m[9];
+  this->GetWorldToEnvironment(m);
+  for (int k = 0; k < 3; ++k)
+  {
+    world[k] = m[k] * local[0] + m[3 + k] * local[1] + m[6 + k] * local[2];
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkEnvironmentMap::DirectionOf(double u, double v, double direction[3])
+{
+  double local[3];
+  Local(u, v, local);
+  this->ToWorld(local, direction);
+}
+
+//------------------------------------------------------------------------------
+void vtkEnvironmentMap::ImagePointOf(const double direction[3], double& u, double& v)
+{
+  double local[3];
+  this->ToLocal(direction, local);
+  LocalToImagePoint(local, u, v);
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkEnvironmentMap::GetImageMTime()
+{
+  vtkDataArray* scalars = this->Image ? this->Image->GetPointData()->GetScalars() : nullptr;
+  return std::max(this->FilterTime.GetMTime(),
+    this->Image ? std::max(this->Image->GetMTime(), scalars ? scalars->GetMTime() : 0) : 0);
+}
+
+//------------------------------------------------------------------------------
+void vtkEnvironmentMap::Update()
+{
+  // GetImageMTime() is at least 1 (the constructor stamps FilterTime), so 0 means never updated.
+  const vtkMTimeType time = this->GetImageMTime();
+  if (time <= this->WorkingTime.load(std::memory_order_acquire))
+  {
+    return;
+  }
+  std::lock_guard<std::mutex> lock(this->UpdateMutex);
+  if (time <= this->WorkingTime.load(std::memory_order_relaxed))
+  {
+    return;
+  }
+  this->Rebuild();
+  this->WorkingTime.store(time, std::memory_order_release);
+}
+
+//------------------------------------------------------------------------------
+void vtkEnvironmentMap::Rebuild()
+{
+  vtkDataArray* scalars = this->Image ? this->Image->GetPointData()->GetScalars() : nullptr;
+  const int w = WorkingWidth, h = WorkingHeight;
+  this->Working.assign(static_cast<size_t>(w) * h * 3, 0.0f);
+  this->RowSolidAngle.resize(h);
+  for (int j = 0; j < h; ++j)
+  {
+    this->RowSolidAngle[j] = (2.0 * Pi / w) *
+      (std::sin(Pi * ((j + 1.0) / h - 0.5)) - std::sin(Pi * (double(j) / h - 0.5)));
+  }
+  std::fill(&this->SH[0][0], &this->SH[0][0] + 27, 0.0);
+  int dims[3] = { 0, 0, 0 };
+  if (this->Image)
+  {
+    this->Image->GetDimensions(dims);
+  }
+  if (!scalars || dims[0] < 1 || dims[1] < 1 || scalars->GetNumberOfTuples() < dims[0] * dims[1])
+  {
+    return;
+  }
+  const int components = scalars->GetNumberOfComponents();
+  auto value = [&](int i, int j, int k)
+  {
+    const vtkIdType id = static_cast<vtkIdType>(j) * dims[0] + i;
+    return scalars->GetComponent(id, components >= 3 ? k : 0);
+  };
+
+  // Resample: the mean of the input pixels whose centres fall in each working pixel (weighted by
+  // their rows' solid angles), or a bilinear sample where the input is the coarser.
+  std::vector<double> sums(this->Working.size(), 0.0), weights(static_cast<size_t>(w) * h, 0.0);
+  if (dims[0] >= w && dims[1] >= h)
+  {
+    for (int j = 0; j < dims[1]; ++j)
+    {
+      const double weight = std::cos(Pi * ((j + 0.5) / dims[1] - 0.5));
+      const int row = std::min(h - 1, static_cast<int>((j + 0.5) / dims[1] * h));
+      for (int i = 0; i < dims[0]; ++i)
+      {
+        const int column = std::min(w - 1, static_cast<int>((i + 0.5) / dims[0] * w));
+        const size_t p = static_cast<size_t>(row) * w + column;
+        for (int k = 0; k < 3; ++k)
+        {
+          sums[3 * p + k] += weight * value(i, j, k);
+        }
+        weights[p] += weight;
+      }
+    }
+  }
+  for (int row = 0; row < h; ++row)
+  {
+    for (int column = 0; column < w; ++column)
+    {
+      const size_t p = static_cast<size_t>(row) * w + column;
+      for (int k = 0; k < 3; ++k)
+      {
+        if (weights[p] > 0.0)
+        {
+          this->Working[3 * p + k] = static_cast<float>(sums[3 * p + k] / weights[p]);
+          continue;
+        }
+        // Bilinear, wrapping in u, clamped in v.
+        const double x = (column + 0.5) / w * dims[0] - 0.5, y = (row + 0.5) / h * dims[1] - 0.5;
+        const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
+        const double fx = x - x0, fy = y - y0;
+        auto at = [&](int i, int j) {
+          return value(
+            ((i % dims[0]) + dims[0]) % dims[0], std::min(dims[1] - 1, std::max(0, j)), k);
+        };
+        this->Working[3 * p + k] =
+          static_cast<float>((1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) +
+            fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1)));
+      }
+    }
+  }
+
+  // The Gaussian blur on the sphere: a von Mises-Fisher kernel exp(kappa (cos t - 1)),
+  // kappa = 1/sigma^2, which is exp(-t^2 / 2 sigma^2) for small angles t, summed over the true
+  // angles between pixel directions (so the poles and the seam need nothing special); rows and
+  // columns beyond 4 sigma contribute nothing measurable and are skipped.
+  std::vector<double> directions(static_cast<size_t>(w) * h * 3);
+  for (int row = 0; row < h; ++row)
+  {
+    for (int column = 0; column < w; ++column)
+    {
+      Local((column + 0.5) / w, (row + 0.5) / h, &directions[3 * (row * w + column)]);
+    }
+  }
+  if (this->BlurAngle > 0.0)
+  {
+    const double sigma = this->BlurAngle, kappa = 1.0 / (sigma * sigma);
+    const std::vector<float> sharp = this->Working;
+    const int band = static_cast<int>(std::ceil(4.0 * sigma / (Pi / h)));
+    vtkSMPTools::For(0, h,
+      [&](vtkIdType first, vtkIdType last)
+      {
+        for (int row = static_cast<int>(first); row < last; ++row)
+        {
+          // Two directions dphi apart in azimuth are at least dphi cos(theta) apart, theta the
+          // band's latitude farthest from the equator: the columns beyond 4 sigma of that are
+          // skipped, and all are kept when the band reaches a pole.
+          const double theta = Pi * ((row + 0.5) / h - 0.5);
+          const double far = std::min(0.5 * Pi, std::abs(theta) + 4.0 * sigma + Pi / h);
+          const double reach =
+            far < 0.5 * Pi - 1e-9 ? std::min(Pi, 4.0 * sigma / std::cos(far) + Pi / w) : Pi;
+          // Columns on either side that can be within reach (all of them near the poles).
+          const int columns = static_cast<int>(std::ceil(reach / (2 * Pi / w)));
+          const int from = columns >= w / 2 ? 0 : -columns, to = columns >= w / 2 ? w - 1 : columns;
+          for (int column = 0; column < w; ++column)
+          {
+            const double* d = &directions[3 * (row * w + column)];
+            double sum[3] = { 0, 0, 0 }, total = 0.0;
+            for (int r = std::max(0, row - band); r <= std::min(h - 1, row + band); ++r)
+            {
+              for (int dc = from; dc <= to; ++dc)
+              {
+                const int c = ((column + dc) % w + w) % w;
+                const size_t p = static_cast<size_t>(r) * w + c;
+                const double weight = this->RowSolidAngle[r] *
+                  std::exp(kappa * (vtkMath::Dot(d, &directions[3 * p]) - 1.0));
+                for (int k = 0; k < 3; ++k)
+                {
+                  sum[k] += weight * sharp[3 * p + k];
+                }
+                total += weight;
+              }
+            }
+            for (int k = 0; k < 3; ++k)
+            {
+              this->Working[3 * (row * w + column) + k] = static_cast<float>(sum[k] / total);
+            }
+          }
+        }
+      });
+  }
+
+  // Order-2 spherical harmonics of the (blurred) environment, in its own frame.
+  for (int row = 0; row < h; ++row)
+  {
+    for (int column = 0; column < w; ++column)
+    {
+      const size_t p = static_cast<size_t>(row) * w + column;
+      double y[9];
+      Harmonics(&directions[3 * p], y);
+      for (int n = 0; n < 9; ++n)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          this->SH[n][k] += y[n] * this->Working[3 * p + k] * this->RowSolidAngle[row];
+        }
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkEnvironmentMap::Radiance(const double direction[3], double rgb[3])
+{
+  this->Update();
+  rgb[0] = rgb[1] = rgb[2] = 0.0;
+  if (!this->Image)
+  {
+    return;
+  }
+  double u, v;
+  this->ImagePointOf(direction, u, v);
+  const int w = WorkingWidth, h = WorkingHeight;
+  const double x = u * w - 0.5, y = v * h - 0.5;
+  const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
+  const double fx = x - x0, fy = y - y0;
+  for (int k = 0; k < 3; ++k)
+  {
+    auto at = [&](int i, int j)
+    {
+      return this->Working[3 *
+          (static_cast<size_t>(std::min(h - 1, std::max(0, j))) * w + ((i % w) + w) % w) +
+        k];
+    };
+    rgb[k] = (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) +
+      fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkEnvironmentMap::CellRadiance(vtkDoubleArray* directions, vtkDoubleArray* radiance)
+{
+  this->Update();
+  const vtkIdType k = directions->GetNumberOfTuples();
+  radiance->SetNumberOfComponents(3);
+  radiance->SetNumberOfTuples(k);
+  radiance->Fill(0.0);
+  if (!this->Image || k == 0)
+  {
+    return;
+  }
+  // The directions in the environment's frame: each working pixel goes to the nearest one.
+  std::vector<double> local(3 * k);
+  for (vtkIdType j = 0; j < k; ++j)
+  {
+    double d[3];
+    directions->GetTuple(j, d);
+    vtkMath::Normalize(d);
+    this->ToLocal(d, &local[3 * j]);
+  }
+  const int w = WorkingWidth, h = WorkingHeight;
+  std::vector<int> nearest(static_cast<size_t>(w) * h);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(w) * h,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType p = first; p < last; ++p)
+      {
+        double d[3];
+        Local((p % w + 0.5) / w, (p / w + 0.5) / h, d);
+        double best = -2.0;
+        for (vtkIdType j = 0; j < k; ++j)
+        {
+          const double dot = vtkMath::Dot(d, &local[3 * j]);
+          if (dot > best)
+          {
+            best = dot;
+            nearest[p] = static_cast<int>(j);
+          }
+        }
+      }
+    });
+  std::vector<double> sums(3 * k, 0.0), areas(k, 0.0);
+  for (int row = 0; row < h; ++row)
+  {
+    for (int column = 0; column < w; ++column)
+    {
+      const size_t p = static_cast<size_t>(row) * w + column;
+      const int j = nearest[p];
+      for (int c = 0; c < 3; ++c)
+      {
+        sums[3 * j + c] += this->Working[3 * p + c] * this->RowSolidAngle[row];
+      }
+      areas[j] += this->RowSolidAngle[row];
+    }
+  }
+  for (vtkIdType j = 0; j < k; ++j)
+  {
+    double rgb[3];
+    if (areas[j] > 0.0)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        rgb[c] = sums[3 * j + c] / areas[j];
+      }
+    }
+    else
+    {
+      // A cell smaller than the working pixels: the radiance at its direction.
+      double d[3];
+      directions->GetTuple(j, d);
+      vtkMath::Normalize(d);
+      this->Radiance(d, rgb);
+    }
+    radiance->SetTuple(j, rgb);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkEnvironmentMap::Irradiance(const double normal[3], double rgb[3])
+{
+  this->Update();
+  double n[3];
+  this->ToLocal(normal, n);
+  vtkMath::Normalize(n);
+  double y[9];
+  Harmonics(n, y);
+  // The cosine lobe's coefficients per band: pi, 2 pi / 3, pi / 4.
+  static const double band[9] = { Pi, 2 * Pi / 3, 2 * Pi / 3, 2 * Pi / 3, Pi / 4, Pi / 4, Pi / 4,
+    Pi / 4, Pi / 4 };
+  for (int k = 0; k < 3; ++k)
+  {
+    rgb[k] = 0.0;
+    for (int i = 0; i < 9; ++i)
+    {
+      rgb[k] += band[i] * this->SH[i][k] * y[i];
+    }
+    rgb[k] = std::max(0.0, rgb[k]);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkEnvironmentMap::CapIrradiance(const double axis[3], double r, double rgb[3])
+{
+  this->Update();
+  rgb[0] = rgb[1] = rgb[2] = 0.0;
+  if (!this->Image)
+  {
+    return;
+  }
+  double a[3];
+  this->ToLocal(axis, a);
+  vtkMath::Normalize(a);
+  const double cosR = std::cos(std::min(std::max(r, 0.0), Pi));
+  const int w = WorkingWidth, h = WorkingHeight;
+  for (int row = 0; row < h; ++row)
+  {
+    for (int column = 0; column < w; ++column)
+    {
+      double d[3];
+      Local((column + 0.5) / w, (row + 0.5) / h, d);
+      const double c = vtkMath::Dot(a, d);
+      if (c >= cosR)
+      {
+        const size_t p = static_cast<size_t>(row) * w + column;
+        for (int k = 0; k < 3; ++k)
+        {
+          rgb[k] += this->Working[3 * p + k] * this->RowSolidAngle[row] * c;
+        }
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkEnvironmentMap::NewCapTable(int columns, int rows, int radii)
+{
+  this->Update();
+  columns = std::max(1, columns);
+  rows = std::max(1, rows);
+  radii = std::max(2, radii);
+  vtkImageData* table = vtkImageData::New();
+  table->SetDimensions(columns, rows, radii);
+  vtkNew<vtkFloatArray> values;
+  values->SetName("CapIrradiance");
+  values->SetNumberOfComponents(3);
+  values->SetNumberOfTuples(static_cast<vtkIdType>(columns) * rows * radii);
+  values->Fill(0.0);
+  table->GetPointData()->SetScalars(values);
+  if (!this->Image)
+  {
+    return table;
+  }
+  const int w = WorkingWidth, h = WorkingHeight;
+  std::vector<double> pixels(static_cast<size_t>(w) * h * 3);
+  for (int row = 0; row < h; ++row)
+  {
+    for (int column = 0; column < w; ++column)
+    {
+      Local((column + 0.5) / w, (row + 0.5) / h, &pixels[3 * (row * w + column)]);
+    }
+  }
+  const double step = 0.5 * Pi / (radii - 1);
+  float* out = values->GetPointer(0);
+  // For each axis, every pixel within pi/2 adds to the first radius that contains it; the sums
+  // then accumulate over the radii.
+  vtkSMPTools::For(0, static_cast<vtkIdType>(columns) * rows,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      std::vector<double> bins(3 * radii);
+      for (vtkIdType t = first; t < last; ++t)
+      {
+        std::fill(bins.begin(), bins.end(), 0.0);
+        double a[3];
+        Local((t % columns + 0.5) / columns, (t / columns + 0.5) / rows, a);
+        for (int row = 0; row < h; ++row)
+        {
+          for (int column = 0; column < w; ++column)
+          {
+            const size_t p = static_cast<size_t>(row) * w + column;
+            const double c = vtkMath::Dot(a, &pixels[3 * p]);
+            if (c <= 0.0)
+            {
+              continue;
+            }
+            const int bin = std::min(
+              radii - 1, static_cast<int>(std::ceil(std::acos(std::min(1.0, c)) / step - 1e-12)));
+            for (int k = 0; k < 3; ++k)
+            {
+              bins[3 * bin + k] += this->Working[3 * p + k] * this->RowSolidAngle[row] * c;
+            }
+          }
+        }
+        double total[3] = { 0, 0, 0 };
+        for (int b = 0; b < radii; ++b)
+        {
+          for (int k = 0; k < 3; ++k)
+          {
+            total[k] += bins[3 * b + k];
+            out[3 * (static_cast<vtkIdType>(b) * columns * rows + t) + k] =
+              static_cast<float>(total[k]);
+          }
+        }
+      }
+    });
+  return table;
+}
+
+//------------------------------------------------------------------------------
+void vtkEnvironmentMap::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Image: " << this->Image << "\n";
+  os << indent << "UpAxis: "
+     << "XYZ"[this->UpAxis] << "\n";
+  os << indent << "Azimuth: " << this->Azimuth << "\n";
+  os << indent << "Orientation: " << this->Orientation[0];
+  for (int i = 1; i < 9; ++i)
+  {
+    os << ", " << this->Orientation[i];
+  }
+  os << "\n";
+  os << indent << "BlurAngle: " << this->BlurAngle << "\n";
+}
