@@ -15,8 +15,10 @@
 #include "vtkSphericalCapGLSL.h"
 
 #include "vtkActor.h"
+#include "vtkCamera.h"
 #include "vtkCollectionIterator.h"
 #include "vtkDataArray.h"
+#include "vtkEnvironmentMap.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -87,6 +89,7 @@ vtkApertureLightingInterface::vtkApertureLightingInterface()
 vtkApertureLightingInterface::~vtkApertureLightingInterface()
 {
   this->SetApertureImage(nullptr);
+  this->SetSkyEnvironment(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -168,6 +171,32 @@ void vtkApertureLightingInterface::SetApertureImage(vtkImageData* image)
     image->Register(this);
   }
   this->CheckedTime = 0;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingInterface::SetSkyEnvironment(vtkEnvironmentMap* environment)
+{
+  if (this->SkyEnvironment == environment)
+  {
+    return;
+  }
+  // Switching between the uniform and the environment sky changes the shaders.
+  if (!this->SkyEnvironment != !environment)
+  {
+    this->ShaderTime.Modified();
+  }
+  vtkEnvironmentMap* previous = this->SkyEnvironment;
+  this->SkyEnvironment = environment;
+  if (environment)
+  {
+    environment->Register(this);
+  }
+  if (previous)
+  {
+    previous->UnRegister(this);
+  }
+  this->SkyTableTime = 0;
   this->Modified();
 }
 
@@ -298,7 +327,8 @@ bool vtkApertureLightingInterface::ReplaceShaderLight(
   dec << static_cast<vtkOpenGLRenderer*>(renderer)->GetLightingUniforms() << "\n"
       << "#define APERTURE_SHADING " << this->ShadingMode << "\n"
       << "#define APERTURE_LAMBERT " << this->LambertMode << "\n"
-      << vtkSphericalCapGLSL << "\n"
+      << (this->SkyEnvironment ? "#define APERTURE_SKY_ENVIRONMENT\n" : "") << vtkSphericalCapGLSL
+      << "\n"
       << vtkApertureLightingFS << "\n"
       << "uniform vec3 apertureSkyColor;\n"
       << "uniform int apertureSkyCosine;\n";
@@ -413,8 +443,10 @@ bool vtkApertureLightingInterface::ReplaceShaderLight(
   }
   impl << "  if (aperture.radius >= 0.0)\n"
           "  {\n"
-          "    diffuse += apertureSkyColor * sphericalCapSkyShade(aperture, apertureCovered, "
-          "dot(normalVCVSOutput, aperture.axis), apertureSkyCosine != 0);\n"
+          "    diffuse += apertureSkyColor * "
+       << (this->SkyEnvironment ? "apertureSkyEnvironment" : "sphericalCapSkyShade")
+       << "(aperture, apertureCovered, dot(normalVCVSOutput, aperture.axis), apertureSkyCosine != "
+          "0);\n"
           "  }\n"
           "  diffuse = diffuse * diffuseColor;\n"
           "  specular = specular * specularColor;\n"
@@ -466,6 +498,34 @@ void vtkApertureLightingInterface::SetShaderParameters(vtkShaderProgram* program
   if (program->IsUniformUsed("apertureSkyCosine"))
   {
     program->SetUniformi("apertureSkyCosine", this->SkyCosineWeighting ? 1 : 0);
+  }
+  if (program->IsUniformUsed("apertureSkyTable") && this->SkyEnvironment)
+  {
+    this->UploadSkyTable(renderer);
+    this->SkyTable->Activate();
+    program->SetUniformi("apertureSkyTable", this->SkyTable->GetTextureUnit());
+  }
+  if (program->IsUniformUsed("apertureSkyMatrix") && this->SkyEnvironment)
+  {
+    // View coordinates to world (the camera's rotation, transposed), then to the environment;
+    // set transposed, as SetUniformMatrix() hands GL a row-major matrix for a column-major one.
+    double toEnvironment[9];
+    this->SkyEnvironment->GetWorldToEnvironment(toEnvironment);
+    vtkMatrix4x4* view = renderer->GetActiveCamera()->GetModelViewTransformMatrix();
+    vtkNew<vtkMatrix3x3> matrix;
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        double sum = 0.0;
+        for (int k = 0; k < 3; ++k)
+        {
+          sum += toEnvironment[3 * i + k] * view->GetElement(j, k);
+        }
+        matrix->SetElement(j, i, sum);
+      }
+    }
+    program->SetUniformMatrix("apertureSkyMatrix", matrix);
   }
 
   // Light sizes, in the order the renderer numbers its switched-on lights.
@@ -570,11 +630,44 @@ void vtkApertureLightingInterface::UploadTexture(vtkRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
+void vtkApertureLightingInterface::UploadSkyTable(vtkRenderer* renderer)
+{
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  const vtkMTimeType time = this->SkyEnvironment->GetImageMTime();
+  if (this->SkyTable && this->SkyTableTime == time && this->SkyTable->GetContext() == window)
+  {
+    return;
+  }
+  vtkSmartPointer<vtkImageData> table;
+  table.TakeReference(this->SkyEnvironment->NewCapTable(64, 32, 16));
+  int dims[3];
+  table->GetDimensions(dims);
+  if (!this->SkyTable)
+  {
+    this->SkyTable = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  this->SkyTable->SetContext(window);
+  // Around the seam in azimuth, clamped at the poles and at the radii's ends.
+  this->SkyTable->SetWrapS(vtkTextureObject::Repeat);
+  this->SkyTable->SetWrapT(vtkTextureObject::ClampToEdge);
+  this->SkyTable->SetWrapR(vtkTextureObject::ClampToEdge);
+  this->SkyTable->SetMinificationFilter(vtkTextureObject::Linear);
+  this->SkyTable->SetMagnificationFilter(vtkTextureObject::Linear);
+  this->SkyTable->Create3DFromRaw(dims[0], dims[1], dims[2], 3, VTK_FLOAT,
+    vtkFloatArray::SafeDownCast(table->GetPointData()->GetScalars())->GetPointer(0));
+  this->SkyTableTime = time;
+}
+
+//------------------------------------------------------------------------------
 void vtkApertureLightingInterface::DeactivateTexture()
 {
   if (this->Texture)
   {
     this->Texture->Deactivate();
+  }
+  if (this->SkyTable)
+  {
+    this->SkyTable->Deactivate();
   }
 }
 
@@ -585,6 +678,11 @@ void vtkApertureLightingInterface::ReleaseGraphicsResources(vtkWindow* window)
   {
     this->Texture->ReleaseGraphicsResources(window);
     this->Texture = nullptr;
+  }
+  if (this->SkyTable)
+  {
+    this->SkyTable->ReleaseGraphicsResources(window);
+    this->SkyTable = nullptr;
   }
 }
 
@@ -600,6 +698,7 @@ void vtkApertureLightingInterface::PrintSelf(ostream& os, vtkIndent indent)
      << this->SkyColor[2] << "\n";
   os << indent << "SkyIntensity: " << this->SkyIntensity << "\n";
   os << indent << "SkyCosineWeighting: " << this->SkyCosineWeighting << "\n";
+  os << indent << "SkyEnvironment: " << this->SkyEnvironment << "\n";
   os << indent << "DefaultLightRadius: " << this->DefaultLightRadius << "\n";
   os << indent << "ApertureImage: " << this->ApertureImage << "\n";
 }

@@ -54,6 +54,7 @@
 class vtkActor;
 class vtkDataArray;
 class vtkDataSet;
+class vtkEnvironmentMap;
 class vtkImageData;
 class vtkInformationDoubleKey;
 class vtkLight;
@@ -128,6 +129,20 @@ public:
   vtkGetVector3Macro(SkyColor, double);
   vtkSetClampMacro(SkyIntensity, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(SkyIntensity, double);
+  ///@}
+
+  ///@{
+  /**
+   * A sky from an HDR environment instead of a uniform one: each aperture sees the environment's
+   * radiance integrated over its cap, weighted by the cosine to the bent normal
+   * (vtkEnvironmentMap::CapIrradiance(), tabulated once per environment on a 64 × 32 grid of axes
+   * and 16 radii and looked up in the shader), over π, less the share the lights cover. It is
+   * scaled by SkyColor × SkyIntensity: set SkyIntensity to 1 for the environment's own radiance.
+   * Turning the environment (its Azimuth, Orientation) only changes a uniform. nullptr (the
+   * default) for the uniform sky.
+   */
+  void SetSkyEnvironment(vtkEnvironmentMap* environment);
+  vtkGetObjectMacro(SkyEnvironment, vtkEnvironmentMap);
   ///@}
 
   ///@{
@@ -211,12 +226,13 @@ public:
   static void ComputeNormalMatrix(vtkRenderer* renderer, vtkActor* actor, vtkMatrix3x3* result);
 
   /**
-   * For the mappers: after drawing, releases the texture unit of the per-texel mode.
+   * For the mappers: after drawing, releases the texture units of the per-texel mode and of the
+   * environment sky.
    */
   void DeactivateTexture();
 
   /**
-   * Releases the per-texel texture.
+   * Releases the textures of the per-texel mode and of the environment sky.
    */
   void ReleaseGraphicsResources(vtkWindow* window);
 
@@ -233,16 +249,22 @@ protected:
   bool SkyCosineWeighting = true;
   double DefaultLightRadius = 0.0047;
   vtkImageData* ApertureImage = nullptr;
+  vtkEnvironmentMap* SkyEnvironment = nullptr;
 
 private:
   vtkApertureLightingInterface(const vtkApertureLightingInterface&) = delete;
   void operator=(const vtkApertureLightingInterface&) = delete;
 
   void UploadTexture(vtkRenderer* renderer);
+  // Builds the environment sky's table and uploads it as a 3D texture, when the environment's
+  // image or blur changed.
+  void UploadSkyTable(vtkRenderer* renderer);
 
   vtkTimeStamp ShaderTime;
   vtkSmartPointer<vtkTextureObject> Texture;
   vtkTimeStamp TextureTime;
+  vtkSmartPointer<vtkTextureObject> SkyTable;
+  vtkMTimeType SkyTableTime = 0;
   std::string LastProblem;
   vtkDataArray* CheckedArrays[2] = { nullptr, nullptr };
   vtkMTimeType CheckedTime = 0;

@@ -104,6 +104,17 @@ public:
 
   ///@{
   /**
+   * A sky from an HDR environment (see vtkApertureLightingInterface::SetSkyEnvironment()).
+   */
+  void SetSkyEnvironment(vtkEnvironmentMap* environment)
+  {
+    this->Lighting->SetSkyEnvironment(environment);
+  }
+  vtkEnvironmentMap* GetSkyEnvironment() { return this->Lighting->GetSkyEnvironment(); }
+  ///@}
+
+  ///@{
+  /**
    * Angular radius of lights without a radius of their own. Default 0.0047 rad (the sun).
    */
   void SetDefaultLightRadius(double radius) { this->Lighting->SetDefaultLightRadius(radius); }

@@ -51,3 +51,30 @@ void apertureAddLight(vec3 n, sphericalCapCap aperture, sphericalCapCap light, v
                        : sign(df) * pow(max(0.0, dot(reflect(-L, n), viewDir)), specularPower);
   specular += sf * seen * color;
 }
+
+#ifdef APERTURE_SKY_ENVIRONMENT
+// The sky from an environment: a table of its radiance integrated over caps, weighted by the
+// cosine to the cap's axis, over axes (u, v in the environment's frame) and radii from 0 to pi/2
+// (vtkEnvironmentMap::NewCapTable()); apertureSkyMatrix takes view coordinates into that frame.
+uniform sampler3D apertureSkyTable;
+uniform mat3 apertureSkyMatrix;
+
+// What the sky adds through an aperture, as radiance reflected with albedo 1: the table's
+// irradiance over pi, less the share of the aperture the lights cover, optionally weighted by
+// the cosine between the normal and the bent normal (as the uniform sky is).
+vec3 apertureSkyEnvironment(
+  sphericalCapCap aperture, float covered, float cosNormalBent, bool cosineWeighted)
+{
+  vec3 d = normalize(apertureSkyMatrix * aperture.axis);
+  float u = sphericalCapAtan2(d.y, d.x) / (2.0 * sphericalCapPi) + 0.5;
+  float v = sphericalCapAtan2(d.z, length(d.xy)) / sphericalCapPi + 0.5;
+  float radii = float(textureSize(apertureSkyTable, 0).z);
+  float r = clamp(aperture.radius / (0.5 * sphericalCapPi), 0.0, 1.0);
+  vec3 irradiance = texture(apertureSkyTable, vec3(u, v, (r * (radii - 1.0) + 0.5) / radii)).rgb;
+  float h = aperture.halfSin;
+  float area = 4.0 * sphericalCapPi * h * h;
+  float open = area > 0.0 ? max(0.0, 1.0 - covered / area) : 0.0;
+  return irradiance / sphericalCapPi * open *
+    (cosineWeighted ? clamp(cosNormalBent, 0.0, 1.0) : 1.0);
+}
+#endif
