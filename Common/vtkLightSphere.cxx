@@ -21,6 +21,10 @@
 
 vtkStandardNewMacro(vtkLightSphere);
 
+// Defined here too for C++11/14, where std::min and std::max taking it by reference need a
+// definition.
+constexpr int vtkLightSphere::MaximumLevel;
+
 namespace
 {
 using Vector = std::array<double, 3>;

@@ -18,6 +18,10 @@
 
 vtkStandardNewMacro(vtkSphericalCap);
 
+// Defined here too for C++11/14, where std::min and std::max taking it by reference need a
+// definition.
+constexpr double vtkSphericalCap::MinimumLightRadius;
+
 namespace
 {
 constexpr double Pi = vtkMath::Pi();

@@ -53,6 +53,7 @@
 #include "vtkWindowToImageFilter.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -90,7 +91,12 @@ vtkSmartPointer<vtkPolyData> Run(vtkPolyData* input, int backend, int level,
   filter->SetBackend(backend);
   filter->SetLevel(level);
   filter->ComputeVisibilityBitsOn();
-  filter->Update();
+  if (!filter->GetExecutive()->Update())
+  {
+    // Everything below reads the matrix: stop here (no OpenGL context, e.g. outside xvfb-run).
+    std::cerr << "FAIL the filter failed (see its error above)\n";
+    std::exit(EXIT_FAILURE);
+  }
   auto output = vtkSmartPointer<vtkPolyData>::New();
   output->ShallowCopy(filter->GetOutput());
   return output;
