@@ -13,7 +13,7 @@ CMAKE_ARGS ?=
 XVFB = xvfb-run -a -s "-screen 0 1920x1080x24"
 RENDER = $(XVFB) $(BUILD_DIR)/bin/aperture-render
 
-.PHONY: all deps configure build demo test pictures install format clean
+.PHONY: all deps configure build demo test pictures fuzz install format clean
 
 all: build
 
@@ -52,6 +52,26 @@ pictures: build
 	  --size 360x330 --sphere-light -0.15,0.22,0.14,0.03 \
 	  --cache $(BUILD_DIR)/demo/bunny-apertures.vtp
 
+# libFuzzer on the EXR reading path, with AddressSanitizer and UndefinedBehaviorSanitizer, in a
+# Clang build of its own, for FUZZ_SECONDS (60) from random seed FUZZ_SEED (0: a new one each
+# run); the corpus and any crash-* files stay in $(FUZZ_DIR)/corpus and $(FUZZ_DIR).
+FUZZ_DIR ?= build-fuzz
+FUZZ_SECONDS ?= 60
+FUZZ_SEED ?= 0
+SANITIZE = -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
+fuzz:
+	@Utilities/install-dependencies.sh fuzz
+	@mkdir -p $(FUZZ_DIR)/corpus
+	@CC=clang CXX=clang++ cmake -S . -B $(FUZZ_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DAPERTURELIGHTING_LIBFUZZER=ON -DPython3_EXECUTABLE=$(PYTHON) \
+	  -DCMAKE_C_FLAGS="$(SANITIZE)" -DCMAKE_CXX_FLAGS="$(SANITIZE) -fsanitize=fuzzer-no-link" \
+	  -DCMAKE_EXE_LINKER_FLAGS="$(SANITIZE)" -DCMAKE_SHARED_LINKER_FLAGS="$(SANITIZE)" \
+	  > $(FUZZ_DIR)/configure.log 2>&1 || { cat $(FUZZ_DIR)/configure.log; exit 1; }
+	@cmake --build $(FUZZ_DIR) --parallel $(JOBS) --target FuzzOpenEXRReader FuzzOpenEXRReaderReplay
+	@$(FUZZ_DIR)/bin/FuzzOpenEXRReaderReplay --write-seeds $(FUZZ_DIR)/corpus
+	@cd $(FUZZ_DIR) && ./bin/FuzzOpenEXRReader -max_total_time=$(FUZZ_SECONDS) \
+	  -seed=$(FUZZ_SEED) -timeout=10 -rss_limit_mb=2048 -max_len=16384 -print_final_stats=1 corpus
+
 install: build
 	@cmake --install $(BUILD_DIR)
 
@@ -60,4 +80,4 @@ format:
 	  | xargs clang-format -i --style=file
 
 clean:
-	@rm -rf $(BUILD_DIR)
+	@rm -rf $(BUILD_DIR) $(FUZZ_DIR)

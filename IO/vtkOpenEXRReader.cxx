@@ -27,10 +27,13 @@
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfRgbaFile.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <memory>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkOpenEXRReader);
@@ -160,12 +163,128 @@ bool vtkOpenEXRReader::CanRead()
 
 namespace
 {
+std::int32_t Int32At(const char* p)
+{
+  const unsigned char* b = reinterpret_cast<const unsigned char*>(p);
+  return static_cast<std::int32_t>(static_cast<std::uint32_t>(b[0]) | (std::uint32_t(b[1]) << 8) |
+    (std::uint32_t(b[2]) << 16) | (std::uint32_t(b[3]) << 24));
+}
+
+// Walks the headers before the library reads them. The library allocates what an attribute's
+// size field says before reading its value, and its chunk tables from the windows and the chunk
+// count, so a few damaged bytes could make it ask for gigabytes. Here every attribute must lie
+// within the bytes, the windows and tiles within maximumSide, and chunk counts within the bytes.
+bool CheckHeaders(const char* data, uint64_t size, int maximumSide, std::string& error)
+{
+  if (size < 8)
+  {
+    error = "the file ends inside its version field (truncated)";
+    return false;
+  }
+  const std::int32_t version = Int32At(data + 4);
+  if ((version & 0xff) != 2)
+  {
+    error = "OpenEXR format version " + std::to_string(version & 0xff) + " is not supported";
+    return false;
+  }
+  const bool multipart = (version & 0x1000) != 0;
+  const uint64_t longestName = (version & 0x400) ? 255 : 31;
+  uint64_t at = 8;
+  auto name = [&](std::string& text)
+  {
+    const uint64_t end = std::min(size, at + longestName + 1);
+    const void* zero = std::memchr(data + at, 0, static_cast<size_t>(end - at));
+    if (!zero)
+    {
+      return false;
+    }
+    text.assign(data + at, static_cast<const char*>(zero));
+    at += text.size() + 1;
+    return !text.empty();
+  };
+  for (int part = 0;; ++part)
+  {
+    while (true)
+    {
+      if (at >= size)
+      {
+        error = "the file ends inside its header (truncated)";
+        return false;
+      }
+      if (data[at] == 0)
+      {
+        ++at;
+        break;
+      }
+      std::string attribute, type;
+      if (!name(attribute) || !name(type) || size - at < 4)
+      {
+        error = "its header is damaged (an attribute without a valid name or type)";
+        return false;
+      }
+      const std::int32_t length = Int32At(data + at);
+      at += 4;
+      if (length < 0 || static_cast<uint64_t>(length) > size - at)
+      {
+        error = "its header attribute '" + attribute + "' claims " + std::to_string(length) +
+          " bytes, more than the file holds (truncated or damaged)";
+        return false;
+      }
+      const char* value = data + at;
+      if ((attribute == "dataWindow" || attribute == "displayWindow") && type == "box2i" &&
+        length == 16)
+      {
+        const vtkTypeInt64 width = vtkTypeInt64(Int32At(value + 8)) - Int32At(value) + 1;
+        const vtkTypeInt64 height = vtkTypeInt64(Int32At(value + 12)) - Int32At(value + 4) + 1;
+        if (width < 1 || height < 1 || width > maximumSide || height > maximumSide)
+        {
+          error = "its " + attribute + " is " + std::to_string(width) + " x " +
+            std::to_string(height) + ": sides from 1 to " + std::to_string(maximumSide) +
+            " are allowed";
+          return false;
+        }
+      }
+      else if (attribute == "tiles" && type == "tiledesc" && length == 9)
+      {
+        const vtkTypeInt64 tileWidth = static_cast<std::uint32_t>(Int32At(value));
+        const vtkTypeInt64 tileHeight = static_cast<std::uint32_t>(Int32At(value + 4));
+        if (tileWidth < 1 || tileHeight < 1 || tileWidth > maximumSide || tileHeight > maximumSide)
+        {
+          error = "its tiles are " + std::to_string(tileWidth) + " x " +
+            std::to_string(tileHeight) + ": sides from 1 to " + std::to_string(maximumSide) +
+            " are allowed";
+          return false;
+        }
+      }
+      else if (attribute == "chunkCount" && type == "int" && length == 4 &&
+        (Int32At(value) < 0 || static_cast<uint64_t>(Int32At(value)) > size / 8))
+      {
+        error = "its chunk count, " + std::to_string(Int32At(value)) +
+          ", does not fit in the file (truncated or damaged)";
+        return false;
+      }
+      at += static_cast<uint64_t>(length);
+    }
+    // Multi-part files list headers until an empty one.
+    if (!multipart || (at < size && data[at] == 0))
+    {
+      return true;
+    }
+    if (at >= size)
+    {
+      error = "the file ends inside its headers (truncated)";
+      return false;
+    }
+  }
+}
+
 // Opens the EXR (after the checks a reader can make without the library), or returns nullptr
 // with the reason.
 std::unique_ptr<Imf::InputFile> Open(const std::string& fileName, const void* buffer,
-  vtkIdType length, Source& source, std::unique_ptr<MemoryStream>& stream, std::string& error)
+  vtkIdType length, int maximumSide, Source& source, std::unique_ptr<MemoryStream>& stream,
+  std::string& error)
 {
-  const std::string what = buffer ? std::string("the memory buffer") : "'" + fileName + "'";
+  const std::string what = buffer ? std::string("The memory buffer") : "'" + fileName + "'";
   if (buffer)
   {
     source.Data = static_cast<const char*>(buffer);
@@ -189,6 +308,11 @@ std::unique_ptr<Imf::InputFile> Open(const std::string& fileName, const void* bu
     error = what + " is not an OpenEXR file";
     return nullptr;
   }
+  if (!CheckHeaders(source.Data, source.Size, maximumSide, error))
+  {
+    error = what + " cannot be read as OpenEXR: " + error;
+    return nullptr;
+  }
   try
   {
     stream.reset(new MemoryStream(source.Data, source.Size, buffer ? "memory buffer" : fileName));
@@ -207,14 +331,11 @@ int vtkOpenEXRReader::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   this->Width = this->Height = this->Components = 0;
-  // The library refuses larger images itself, before allocating for them.
-  Imf::Header::setMaxImageSize(this->MaximumSide, this->MaximumSide);
-  Imf::Header::setMaxTileSize(this->MaximumSide, this->MaximumSide);
   Source source;
   std::unique_ptr<MemoryStream> stream;
   std::string error;
-  std::unique_ptr<Imf::InputFile> file =
-    Open(this->FileName, this->MemoryBuffer, this->MemoryBufferLength, source, stream, error);
+  std::unique_ptr<Imf::InputFile> file = Open(this->FileName, this->MemoryBuffer,
+    this->MemoryBufferLength, this->MaximumSide, source, stream, error);
   if (!file)
   {
     vtkErrorMacro(<< error << ".");
@@ -277,8 +398,8 @@ int vtkOpenEXRReader::RequestData(
   Source source;
   std::unique_ptr<MemoryStream> stream;
   std::string error;
-  std::unique_ptr<Imf::InputFile> file =
-    Open(this->FileName, this->MemoryBuffer, this->MemoryBufferLength, source, stream, error);
+  std::unique_ptr<Imf::InputFile> file = Open(this->FileName, this->MemoryBuffer,
+    this->MemoryBufferLength, this->MaximumSide, source, stream, error);
   if (!file)
   {
     vtkErrorMacro(<< error << ".");

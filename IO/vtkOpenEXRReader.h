@@ -23,9 +23,11 @@
  * Bad input is an error and an empty output, never a crash: a missing file, a file that is not
  * OpenEXR, a truncated or damaged one (the library's exception becomes the message), no R, G, B
  * or Y channel, and sizes past MaximumSide or MaximumBytes, checked before anything is
- * allocated. NaN and negative pixel values become 0 and infinite ones 65504 (the largest half),
- * with one warning unless they are only the slightly negative values lossy compression (DWAA,
- * DWAB) leaves, above -1% of the mean.
+ * allocated. The headers are checked before the library reads them, since it allocates what a
+ * damaged size field says: every attribute must lie within the file, and the windows and tiles
+ * within MaximumSide. NaN and negative pixel values become 0 and infinite ones 65504 (the largest
+ * half), with one warning unless they are only the slightly negative values lossy compression
+ * (DWAA, DWAB) leaves, above -1% of the mean.
  *
  * @sa vtkEnvironmentMap
  */

@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages the project needs, only those that are missing.
+#   install-dependencies.sh        what building and testing need
+#   install-dependencies.sh fuzz   and Clang, for `make fuzz` (libFuzzer and the sanitizers)
 set -euo pipefail
 
 packages=(
@@ -8,6 +10,9 @@ packages=(
   libembree-dev libopenexr-dev libglm-dev libx11-dev
   xvfb xauth
 )
+if [ "${1:-}" = "fuzz" ]; then
+  packages+=(clang)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -11,8 +11,9 @@
 // vtkOpenEXRReader against files written here with the OpenEXR library: RGB half scanlines,
 // RGBA float tiles, luminance, luminance-chroma, a data window inside the display window, the
 // row order, NaN/Inf/negative values; then the CC0 environments (DWAB), the same file from
-// memory, and bad input: missing, not EXR, truncated, absurd sizes, no colour channel, and a few
-// hundred randomly damaged files, none of which may crash the reader.
+// memory, and bad input: missing, not EXR, truncated, absurd sizes, an attribute claiming 2 GiB,
+// absurd tiles, no colour channel, and a few hundred randomly damaged files, none of which may
+// crash the reader.
 
 #include "vtkOpenEXRReader.h"
 
@@ -33,7 +34,9 @@
 #include <OpenEXR/ImfRgbaFile.h>
 #include <OpenEXR/ImfTiledOutputFile.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <iterator>
@@ -350,7 +353,26 @@ int TestOpenEXRReader(int argc, char* argv[])
     file.setFrameBuffer(frame);
     file.writePixels(1);
   }
-  expectError(Read(temp + "huge.exr"), "is not allowed", "absurd size");
+  expectError(Read(temp + "huge.exr"), "are allowed", "absurd size");
+  // An attribute whose size field claims 2 GiB: the library would allocate that before reading.
+  std::vector<char> greedy = Bytes(temp + "rgb-half.exr");
+  const size_t sizeField = 8 + std::strlen("channels") + 1 + std::strlen("chlist") + 1;
+  Check(std::string(greedy.data() + 8) == "channels", "the first attribute is the channel list");
+  const unsigned char claim[4] = { 0xff, 0xff, 0xff, 0x7f };
+  std::memcpy(&greedy[sizeField], claim, 4);
+  expectError(Read("", &greedy), "more than the file holds", "attribute size past the end");
+  // Tiles of 2^31 x 1 pixels.
+  std::vector<char> tiles = Bytes(temp + "rgba-float-tiled.exr");
+  const std::string tileAttribute("tiles\0tiledesc\0", 15);
+  const auto tileAt =
+    std::search(tiles.begin(), tiles.end(), tileAttribute.begin(), tileAttribute.end());
+  Check(tileAt != tiles.end(), "the tiled file has a tile description");
+  if (tileAt != tiles.end())
+  {
+    const unsigned char wide[4] = { 0x00, 0x00, 0x00, 0x80 };
+    std::memcpy(&*(tileAt + 15 + 4), wide, 4);
+    expectError(Read("", &tiles), "are allowed", "absurd tile size");
+  }
   Write(temp + "depth-only.exr", whole, whole, { "Z" }, Imf::FLOAT, false);
   expectError(Read(temp + "depth-only.exr"), "no R, G, B or Y channel", "no colour channel");
 
