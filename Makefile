@@ -38,8 +38,8 @@ test: build
 	@cd $(BUILD_DIR) && xvfb-run -a -s "-screen 0 1920x1080x24" \
 	  ctest --output-on-failure --parallel $(JOBS)
 
-# The pictures in README.md and docs/: every shading mode on the Fuji terrain and on the bunny, and
-# the aperture radius as colours.
+# The pictures in README.md and docs/: every shading mode on the Fuji terrain and on the bunny, the
+# aperture radius as colours, and HDR environments.
 pictures: build
 	@mkdir -p docs/images $(BUILD_DIR)/demo
 	@$(RENDER) -o docs/images/fuji.png --size 1280x800 \
@@ -51,6 +51,10 @@ pictures: build
 	@$(RENDER) Testing/Data/stanford-bunny.obj -o docs/images/bunny-modes.png --mode all \
 	  --size 360x330 --sphere-light -0.15,0.22,0.14,0.03 \
 	  --cache $(BUILD_DIR)/demo/bunny-apertures.vtp
+	@$(XVFB) $(BUILD_DIR)/bin/BunnyEnvironment Testing/Data/stanford-bunny.obj \
+	  docs/images/bunny-environment.png
+	@$(RENDER) -o docs/images/fuji-sunrise.png --env Testing/Data/env/sunrise.exr --size 800x500 \
+	  --cache $(BUILD_DIR)/demo/fuji-apertures.vti
 
 # libFuzzer on the EXR reading path, with AddressSanitizer and UndefinedBehaviorSanitizer, in a
 # Clang build of its own, for FUZZ_SECONDS (60) from random seed FUZZ_SEED (0: a new one each

@@ -140,6 +140,10 @@ public:
    * scaled by SkyColor × SkyIntensity: set SkyIntensity to 1 for the environment's own radiance.
    * Turning the environment (its Azimuth, Orientation) only changes a uniform. nullptr (the
    * default) for the uniform sky.
+   *
+   * VTK draws without any lighting when the renderer has no light switched on; for a scene lit
+   * by the sky alone, add a light of intensity 0 (its cap, at the smallest radius, hides no
+   * measurable part of the sky).
    */
   void SetSkyEnvironment(vtkEnvironmentMap* environment);
   vtkGetObjectMacro(SkyEnvironment, vtkEnvironmentMap);

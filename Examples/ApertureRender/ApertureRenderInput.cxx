@@ -23,6 +23,7 @@
 #include "vtkImageResize.h"
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
+#include "vtkOpenEXRReader.h"
 #include "vtkPLYReader.h"
 #include "vtkPNGReader.h"
 #include "vtkPNGValidator.h"
@@ -533,6 +534,46 @@ bool LoadInput(const Options& options, MessageCapture& messages, Input& input, s
   }
   FillVoids(input);
   Resample(input, options.MaximumGrid);
+  return true;
+}
+
+bool LoadEnvironment(
+  const Options& options, MessageCapture& messages, Input& input, std::string& error)
+{
+  const std::string& name = options.Environment;
+  if (name.empty())
+  {
+    return true;
+  }
+  if (!vtksys::SystemTools::FileExists(name) || vtksys::SystemTools::FileIsDirectory(name))
+  {
+    error = "--env " + Quoted(name) + " does not exist or is not a file";
+    return false;
+  }
+  vtkNew<vtkOpenEXRReader> reader;
+  reader->SetFileName(name.c_str());
+  messages.Clear();
+  reader->Update();
+  if (!messages.FirstError().empty() || reader->GetOutput()->GetNumberOfPoints() == 0)
+  {
+    error = "--env " + Quoted(name) + " cannot be used: " +
+      (messages.FirstError().empty() ? std::string("it holds no pixels") : messages.FirstError());
+    return false;
+  }
+  for (const std::string& warning : messages.Warnings())
+  {
+    input.Notes.push_back("--env " + Quoted(name) + ": " + warning);
+  }
+  input.Environment = reader->GetOutput();
+  int dims[3];
+  input.Environment->GetDimensions(dims);
+  if (dims[0] != 2 * dims[1])
+  {
+    std::ostringstream note;
+    note << "--env " << Quoted(name) << " is " << dims[0] << " x " << dims[1]
+         << ", not 2:1; it is stretched over the sphere as a latitude-longitude map";
+    input.Notes.push_back(note.str());
+  }
   return true;
 }
 }

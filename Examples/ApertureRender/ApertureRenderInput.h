@@ -31,6 +31,8 @@ struct Input
   // A height field: a 2D grid whose active scalars, a float array named Elevation, are heights.
   vtkSmartPointer<vtkImageData> Heights;
   std::string Description;
+  // The --env environment, a float RGB latitude-longitude image; null without --env.
+  vtkSmartPointer<vtkImageData> Environment;
   // What was changed on the way (resampling, filled voids), for the user.
   std::vector<std::string> Notes;
 };
@@ -38,6 +40,11 @@ struct Input
 // Reads the input the options name, or the embedded Mount Fuji tile. Returns false with one
 // sentence in `error` when the input cannot be used.
 bool LoadInput(const Options& options, MessageCapture& messages, Input& input, std::string& error);
+
+// Reads the --env environment, if any, into `input`. Returns false with one sentence in `error`
+// when the file cannot be used.
+bool LoadEnvironment(
+  const Options& options, MessageCapture& messages, Input& input, std::string& error);
 }
 
 #endif

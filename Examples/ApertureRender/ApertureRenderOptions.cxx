@@ -11,6 +11,7 @@
 #include "ApertureRenderOptions.h"
 
 #include "vtksys/CommandLineArguments.hxx"
+#include "vtksys/SystemTools.hxx"
 
 #include <cerrno>
 #include <cmath>
@@ -67,6 +68,7 @@ std::string Quoted(const std::string& text)
 Options::Options()
   : CameraAzimuth(std::numeric_limits<double>::quiet_NaN())
   , CameraElevation(std::numeric_limits<double>::quiet_NaN())
+  , EnvironmentExposure(std::numeric_limits<double>::quiet_NaN())
 {
 }
 
@@ -80,7 +82,8 @@ const std::vector<std::string>& ModeNames()
 int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
 {
   std::string output, size, mode, show, sky, rays, cache, saveData, azimuth, elevation, zoom, up,
-    spacing, heightScale, maximumGrid, background;
+    spacing, heightScale, maximumGrid, background, environment, environmentAzimuth,
+    environmentExposure;
   std::vector<std::string> suns, sphereLights;
   bool interactive = false, help = false, version = false;
 
@@ -98,6 +101,9 @@ int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
   arguments.AddArgument("--sun", value, &suns, "");
   arguments.AddArgument("--sphere-light", value, &sphereLights, "");
   arguments.AddArgument("--sky", value, &sky, "");
+  arguments.AddArgument("--env", value, &environment, "");
+  arguments.AddArgument("--env-azimuth", value, &environmentAzimuth, "");
+  arguments.AddArgument("--env-exposure", value, &environmentExposure, "");
   arguments.AddArgument("--rays", value, &rays, "");
   arguments.AddArgument("--cache", value, &cache, "");
   arguments.AddArgument("--save-data", value, &saveData, "");
@@ -115,8 +121,9 @@ int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
 
   // An option that takes a value cannot be the last word.
   static const std::set<std::string> takesValue = { "-o", "--output", "--size", "--mode", "--show",
-    "--sun", "--sphere-light", "--sky", "--rays", "--cache", "--save-data", "--azimuth",
-    "--elevation", "--zoom", "--up", "--spacing", "--height-scale", "--max-grid", "--background" };
+    "--sun", "--sphere-light", "--sky", "--env", "--env-azimuth", "--env-exposure", "--rays",
+    "--cache", "--save-data", "--azimuth", "--elevation", "--zoom", "--up", "--spacing",
+    "--height-scale", "--max-grid", "--background" };
   if (argc > 1 && takesValue.count(argv[argc - 1]))
   {
     error = std::string("option ") + argv[argc - 1] + " needs a value (see --help)";
@@ -242,6 +249,40 @@ int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
       return 2;
     }
     std::copy(numbers.begin(), numbers.end(), options.Sky);
+    options.SkyGiven = true;
+  }
+  if (!environment.empty())
+  {
+    const std::string extension =
+      vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(environment));
+    if (extension != ".exr")
+    {
+      error = "--env " + Quoted(environment) + " is not an OpenEXR file (.exr)";
+      return 2;
+    }
+    options.Environment = environment;
+  }
+  if ((!environmentAzimuth.empty() || !environmentExposure.empty()) && environment.empty())
+  {
+    error = std::string(environmentAzimuth.empty() ? "--env-exposure" : "--env-azimuth") +
+      " applies to an environment: give one with --env";
+    return 2;
+  }
+  if (!environmentExposure.empty() && environmentExposure != "auto" &&
+    (!ToNumber(environmentExposure, options.EnvironmentExposure) ||
+      std::abs(options.EnvironmentExposure) > 64.0))
+  {
+    error = "--env-exposure " + Quoted(environmentExposure) +
+      " is not 'auto' or a number of stops from -64 to 64";
+    return 2;
+  }
+  if (!environmentAzimuth.empty())
+  {
+    if (!ToNumber(environmentAzimuth, options.EnvironmentAzimuth))
+    {
+      error = "--env-azimuth " + Quoted(environmentAzimuth) + " is not a number of degrees";
+      return 2;
+    }
   }
   if (!background.empty())
   {
@@ -340,7 +381,8 @@ Output:
   --size WxH             picture size in pixels (default 1280x800; with --mode all, each panel)
   --interactive          open a window: drag to orbit; arrow keys move the sun; m switches the
                          shading mode; a shows the aperture radius as a colour map; [ and ]
-                         shrink and grow the lights; s toggles the sky; h lists the keys
+                         shrink and grow the lights; s toggles the sky; e and E turn the
+                         environment; h lists the keys
   --show apertures       colour the surface by its aperture radius (0: closed, pi/2: a whole
                          hemisphere of sky) instead of shading it (default: --show shading)
   --save-data FILE       write the data with its aperture arrays for ParaView: .vtp (the
@@ -349,14 +391,23 @@ Output:
 Lights and shading:
   --sun AZ,EL[,R]        a sun at compass azimuth AZ (0 north, 90 east) and elevation EL above
                          the horizon, angular radius R (default 0.27, the real sun), in degrees;
-                         repeatable. Default: one sun, low in the west-north-west (AZ 285, EL 16)
-                         for height fields; upper left, in front, for meshes (AZ 225, EL 45)
+                         repeatable. Default (unless --sphere-light or --env is given): one sun,
+                         low in the west-north-west (AZ 285, EL 16) for height fields; upper
+                         left, in front, for meshes (AZ 225, EL 45)
   --sphere-light X,Y,Z,R[,I]
                          a sphere light of radius R at (X, Y, Z) in data coordinates, intensity I
                          (default 1: the light an unoccluded surface facing it receives);
                          repeatable
   --sky R,G,B            sky radiance filling the open part of each aperture (default
-                         0.24,0.27,0.34; 0,0,0 for none)
+                         0.24,0.27,0.34; 0,0,0 for none); with --env, a factor on the
+                         environment's radiance (default 1,1,1)
+  --env FILE.exr         an HDR latitude-longitude environment (OpenEXR) as the sky: each point
+                         sees the environment's radiance over its aperture; its top row is the
+                         zenith along --up and its centre column looks north. Without --sun or
+                         --sphere-light the environment is the only light
+  --env-azimuth DEG      turn the environment clockwise about the up axis (default 0)
+  --env-exposure STOPS   scale the environment's radiance by 2^STOPS, or auto (default): the
+                         scale that shows an open, level surface at 80% white
   --mode MODE            exact (default), smoothstep, simplified, bentnormal, standard (plain VTK
                          lighting), or all: one picture with a panel per mode
   --rays N               rays per point for the apertures (default 256)
@@ -386,6 +437,7 @@ Examples:
   aperture-render -o fuji.png
   aperture-render -o fuji-dawn.png --sun 95,6 --sky 0.25,0.2,0.3 --mode smoothstep
   aperture-render bunny.obj -o bunny.png --sphere-light 0.1,0.2,0.15,0.03,1.5 --sun 0,90
+  aperture-render bunny.obj -o bunny-forest.png --env forest.exr --env-azimuth 90
   aperture-render N35E138.hgt --cache n35e138.vti --interactive
   aperture-render scan.ply --mode all --size 480x360 -o modes.png --save-data scan.vtp
 

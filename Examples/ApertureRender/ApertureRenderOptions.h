@@ -44,6 +44,11 @@ struct Options
   std::vector<Sun> Suns;
   std::vector<SphereLight> SphereLights;
   double Sky[3] = { 0.24, 0.27, 0.34 };
+  bool SkyGiven = false;
+  std::string Environment;         // an OpenEXR latitude-longitude sky; empty: the uniform sky
+  double EnvironmentAzimuth = 0.0; // compass turn of the environment, degrees clockwise
+  // Stops by which the environment is brightened; NaN: automatic (an open level surface at 0.8).
+  double EnvironmentExposure;
   int Rays = 256;
   std::string Cache;
   std::string SaveData;

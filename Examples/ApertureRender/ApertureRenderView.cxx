@@ -21,6 +21,7 @@
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkEnvironmentMap.h"
 #include "vtkImageAppend.h"
 #include "vtkImageData.h"
 #include "vtkImageDataGeometryFilter.h"
@@ -108,6 +109,32 @@ View::View(const Options& options, const Input& input, vtkDataObject* apertures)
   this->Mapper->SetShadingMode(this->Mode);
   this->Mapper->SetSkyColor(options.Sky[0], options.Sky[1], options.Sky[2]);
   this->Mapper->SetSkyIntensity(1.0);
+  if (input.Environment)
+  {
+    // The environment's zenith along the data's up axis and its north on the data's north.
+    this->Environment->SetImage(input.Environment);
+    this->Environment->SetUpAxis(this->Up[0] != 0.0 ? 0 : (this->Up[1] != 0.0 ? 1 : 2));
+    this->TurnEnvironment(options.EnvironmentAzimuth);
+    this->Mapper->SetSkyEnvironment(this->Environment);
+    if (!options.SkyGiven)
+    {
+      this->Mapper->SetSkyColor(1.0, 1.0, 1.0);
+    }
+    double exposure = options.EnvironmentExposure;
+    if (std::isnan(exposure))
+    {
+      // HDR maps hold radiance in any unit: show an open level surface at 80% white.
+      double open[3];
+      this->Environment->CapIrradiance(this->Up, vtkMath::Pi() / 2.0, open);
+      const double* tint = this->Mapper->GetSkyColor();
+      const double radiance =
+        (0.2126 * open[0] * tint[0] + 0.7152 * open[1] * tint[1] + 0.0722 * open[2] * tint[2]) /
+        vtkMath::Pi();
+      exposure = radiance > 0.0 ? std::log2(0.8 / radiance) : 0.0;
+    }
+    this->SkyIntensity = std::exp2(exposure);
+    this->Mapper->SetSkyIntensity(this->SkyIntensity);
+  }
   // Meshes that bring their own RGB colours (PLY scans) keep them; other arrays are not colours.
   vtkDataArray* scalars = this->Surface->GetPointData()->GetScalars();
   const bool colours = !this->HeightField && scalars &&
@@ -186,6 +213,19 @@ void View::SetUpAxes(const std::string& up)
   vtkMath::Cross(this->Up, this->East, this->North);
 }
 
+void View::TurnEnvironment(double azimuth)
+{
+  // vtkEnvironmentMap's frames have their zenith on a positive axis and share the data's east
+  // and north there. A negative up axis is that frame turned half-way about east, which also
+  // mirrors the sense of the azimuth.
+  const bool down = this->Up[0] + this->Up[1] + this->Up[2] < 0.0;
+  const double flip[9] = { -1, 0, 0, 0, 1, 0, 0, 0, -1 };
+  const double identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+  this->Environment->SetOrientation(down ? flip : identity);
+  this->Environment->SetAzimuth(down ? -azimuth : azimuth);
+  this->EnvironmentAzimuth = azimuth;
+}
+
 void View::Direction(double azimuth, double elevation, double direction[3]) const
 {
   const double a = Radians(azimuth), e = Radians(elevation);
@@ -199,7 +239,8 @@ void View::Direction(double azimuth, double elevation, double direction[3]) cons
 void View::AddLights()
 {
   this->SunAngles = this->Settings.Suns;
-  if (this->SunAngles.empty() && this->Settings.SphereLights.empty())
+  if (this->SunAngles.empty() && this->Settings.SphereLights.empty() &&
+    this->Settings.Environment.empty())
   {
     this->SunAngles.push_back(
       this->HeightField ? Sun{ 285.0, 16.0, 0.27 } : Sun{ 225.0, 45.0, 0.27 });
@@ -235,6 +276,16 @@ void View::AddLights()
     this->Suns[i]->SetFocalPoint(this->Center);
     this->Suns[i]->SetPosition(
       this->Center[0] + d[0], this->Center[1] + d[1], this->Center[2] + d[2]);
+  }
+  if (this->Suns.empty() && this->Lamps.empty())
+  {
+    // VTK skips lighting altogether when no light is on; a dark, point-sized one keeps the
+    // environment sky shaded.
+    vtkNew<vtkLight> placeholder;
+    placeholder->SetLightTypeToSceneLight();
+    placeholder->SetIntensity(0.0);
+    vtkApertureLightingMapper::SetLightRadius(placeholder, 0.0);
+    this->Renderer->AddLight(placeholder);
   }
 }
 
@@ -406,6 +457,10 @@ void View::UpdateStatus()
     status << "  |  sun " << this->SunAngles[0].Azimuth << " deg, " << this->SunAngles[0].Elevation
            << " deg up, radius " << this->SunAngles[0].Radius << " deg";
   }
+  if (this->Mapper->GetSkyEnvironment())
+  {
+    status << "  |  environment turned " << this->EnvironmentAzimuth << " deg (e/E)";
+  }
   status << "  |  keys: arrows sun, m mode, a apertures, [ ] light size, s sky, h help";
   this->Status->SetInput(status.str().c_str());
 }
@@ -444,15 +499,20 @@ void View::OnKey(vtkObject* caller, unsigned long, void* clientData, void*)
         lamp, vtkApertureLightingMapper::GetLightRadius(lamp) * factor);
     }
   }
+  else if ((key == "e" || key == "E") && view->Mapper->GetSkyEnvironment())
+  {
+    view->TurnEnvironment(
+      std::fmod(view->EnvironmentAzimuth + (key == "e" ? 15.0 : -15.0) + 360.0, 360.0));
+  }
   else if (key == "s")
   {
-    view->Mapper->SetSkyIntensity(view->Mapper->GetSkyIntensity() > 0.0 ? 0.0 : 1.0);
+    view->Mapper->SetSkyIntensity(view->Mapper->GetSkyIntensity() > 0.0 ? 0.0 : view->SkyIntensity);
   }
   else if (key == "h")
   {
     std::cout << "Keys: Left/Right turn the first sun, Up/Down raise or lower it; m next shading "
                  "mode; a aperture radius as colours; [ and ] shrink or grow the lights; s sky "
-                 "on or off; r reset the camera; q quit.\n";
+                 "on or off; e/E turn the environment; r reset the camera; q quit.\n";
   }
   else
   {

@@ -25,6 +25,7 @@
 class vtkActor;
 class vtkApertureLightingMapper;
 class vtkDataObject;
+class vtkEnvironmentMap;
 class vtkImageData;
 class vtkLight;
 class vtkObject;
@@ -65,6 +66,8 @@ public:
 private:
   // The data's compass: unit east, north and up vectors.
   void SetUpAxes(const std::string& up);
+  // Turns the environment to a compass azimuth about the data's up axis.
+  void TurnEnvironment(double azimuth);
   void Direction(double azimuth, double elevation, double direction[3]) const;
   void AddLights();
   void PlaceCamera();
@@ -82,10 +85,13 @@ private:
   double Center[3];
   double East[3], North[3], Up[3];
   int Mode = 0;
+  double EnvironmentAzimuth = 0.0;
+  double SkyIntensity = 1.0; // what the s key turns the sky back on to
   bool DataShown = false;
   std::vector<vtkSmartPointer<vtkLight>> Suns;
   std::vector<Sun> SunAngles;
   std::vector<vtkSmartPointer<vtkLight>> Lamps;
+  vtkNew<vtkEnvironmentMap> Environment; // the --env sky, when there is one
   vtkNew<vtkApertureLightingMapper> Mapper;
   vtkNew<vtkActor> Actor;
   vtkNew<vtkRenderer> Renderer;

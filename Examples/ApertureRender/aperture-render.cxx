@@ -115,7 +115,8 @@ int main(int argc, char* argv[])
   }
 
   Input input;
-  if (!LoadInput(options, messages, input, error))
+  if (!LoadInput(options, messages, input, error) ||
+    !LoadEnvironment(options, messages, input, error))
   {
     return Fail(error, 1);
   }

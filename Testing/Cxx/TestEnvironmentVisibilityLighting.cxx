@@ -108,6 +108,12 @@ int TestEnvironmentVisibilityLighting(int argc, char* argv[])
   vtkNew<vtkOpenEXRReader> forest;
   forest->SetFileName(forestName);
   delete[] forestName;
+  forest->Update();
+  if (forest->GetOutput()->GetNumberOfPoints() == 0)
+  {
+    std::cout << "FAIL the forest map cannot be read (is -D the Testing folder?)\n";
+    return EXIT_FAILURE;
+  }
   lighting->SetEnvironmentConnection(forest->GetOutputPort());
   lighting->SetUpAxisToY();
   lighting->Update();

@@ -26,6 +26,7 @@
 #include "vtkPointData.h"
 #include "vtkTestErrorObserver.h"
 #include "vtkTestUtilities.h"
+#include "vtksys/SystemTools.hxx"
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
@@ -200,6 +201,11 @@ int TestOpenEXRReader(int argc, char* argv[])
     vtkTestUtilities::GetArgOrEnvOrDefault("-T", argc, argv, "VTK_TEMP_DIR", "Testing/Temporary");
   const std::string temp = std::string(temporary) + "/TestOpenEXRReader-";
   delete[] temporary;
+  if (!vtksys::SystemTools::FileIsDirectory(vtksys::SystemTools::GetFilenamePath(temp)))
+  {
+    std::cout << "FAIL no folder for the test's files: " << temp << " (give -T)\n";
+    return EXIT_FAILURE;
+  }
   const Imath::Box2i whole(Imath::V2i(0, 0), Imath::V2i(63, 31));
 
   // RGB half scanlines, RGBA float tiles, luminance: values and row order.

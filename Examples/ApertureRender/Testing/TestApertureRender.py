@@ -3,9 +3,9 @@
     python3 TestApertureRender.py <aperture-render> <Testing/Data> <work folder>
 
 Every input format it reads (meshes and height fields, made here from the bunny and the Fuji
-tile), the embedded default scene, --mode all, --show apertures, the cache, the data it saves,
-and bad input: each bad case must end with exit status 1 or 2 and exactly one line on stderr
-that says what is wrong, never a crash.
+tile), the embedded default scene, --mode all, --show apertures, the cache, the data it saves, an
+HDR environment as the sky, and bad input: each bad case must end with exit status 1 or 2 and
+exactly one line on stderr that says what is wrong, never a crash.
 """
 
 import os
@@ -235,6 +235,23 @@ lines[first_vertex] = "v nan nan nan"
 write_bytes("bunny-nan.obj", "\n".join(lines).encode())
 expect_picture("NaN point", [path("bunny-nan.obj"), *FAST])
 
+# An HDR environment as the sky: turning it changes the picture, -1 stop halves the light.
+forest = os.path.join(DATA, "env", "forest.exr")
+expect_picture("environment sky on a mesh", [bunny, *FAST, "--env", forest])
+expect_picture("environment sky on a height field",
+               [fuji_png, *FAST, "--env", os.path.join(DATA, "env", "sunrise.exr")])
+env_pictures = {}
+for name, extra in (("env-0", []), ("env-180", ["--env-azimuth", "180"]),
+                    ("env-dark", ["--env-exposure", "-1"]), ("env-bright", ["--env-exposure", "0"])):
+    env_pictures[name] = path(name + ".png")
+    run(bunny, *FAST, "--env", forest, *extra, "-o", env_pictures[name])
+lit = {name: read_png(p)[:, :, :3].astype(float) for name, p in env_pictures.items()}
+mask = np.abs(lit["env-0"] - lit["env-0"][0, 0]).sum(axis=2) > 12
+turned = np.abs(lit["env-180"] - lit["env-0"])[mask].mean()
+ratio = lit["env-dark"][mask].mean() / lit["env-bright"][mask].mean()
+check(turned > 4, f"--env-azimuth 180 changes the shading (mean {turned:.1f} levels)")
+check(0.35 < ratio < 0.65, f"--env-exposure -1 against 0: {ratio:.2f} of the light (linear 0.5)")
+
 # Bad input: one line, non-zero exit.
 expect_failure("missing file", [path("no-such.obj"), "-o", path("x.png")], 1, "does not exist")
 expect_failure("directory", [WORK, "-o", path("x.png")], 1, "is a directory")
@@ -283,6 +300,17 @@ expect_failure("narrow DEM", [write_bytes("narrow.dem", dem_text(20, 10, dem_val
 dem_full = open(path("fuji.dem"), "rb").read()
 expect_failure("truncated DEM", [write_bytes("truncated.dem", dem_full[:len(dem_full) // 2]),
                                  "-o", path("x.png")], 1, "truncated")
+expect_failure("missing environment", [bunny, *FAST, "--env", path("none.exr"),
+                                      "-o", path("x.png")], 1, "does not exist")
+forest_bytes = open(os.path.join(DATA, "env", "forest.exr"), "rb").read()
+for fraction in (2, 50):
+    expect_failure(f"environment cut to 1/{fraction}",
+                   [bunny, *FAST, "-o", path("x.png"), "--env",
+                    write_bytes(f"cut-{fraction}.exr", forest_bytes[:len(forest_bytes) // fraction])],
+                   1, "cannot be used")
+expect_failure("environment that is not an EXR",
+               [bunny, *FAST, "-o", path("x.png"), "--env", write_bytes("fake.exr", b"P6\n1 1\n")],
+               1, "not an OpenEXR file")
 expect_failure("no X display", [bunny, *FAST, "-o", path("x.png")], 1, "X display",
                env={k: v for k, v in os.environ.items() if k != "DISPLAY"})
 
@@ -310,6 +338,10 @@ for args, words in (
         (["--cache", path("x.txt")], "must end in"),
         (["--cache", path("fuji.vtp")], "must end in .vti"),
         (["--save-data", path("bunny.vti"), bunny], ".vtp"),
+        (["--env", path("sky.hdr")], "not an OpenEXR file"),
+        (["--env-azimuth", "90"], "give one with --env"),
+        (["--env", path("sky.exr"), "--env-azimuth", "east"], "number of degrees"),
+        (["--env", path("sky.exr"), "--env-exposure", "bright"], "'auto' or a number"),
         (["--sun"], "needs a value")):
     if args[-1] != "--sun" and "-o" not in args:
         args = [*args, "-o", path("x.png")]
@@ -319,7 +351,7 @@ expect_failure("neither -o nor --interactive", [bunny], 2, "--interactive")
 
 help_text = run("--help")
 options = ["-o", "--size", "--interactive", "--save-data", "--show", "--sun", "--sphere-light",
-           "--sky", "--mode", "--rays", "--cache", "--azimuth", "--elevation", "--zoom", "--up",
+           "--sky", "--env", "--env-azimuth", "--env-exposure", "--mode", "--rays", "--cache", "--azimuth", "--elevation", "--zoom", "--up",
            "--background", "--spacing", "--height-scale", "--max-grid", "--help", "--version",
            "Examples:"]
 check(help_text.returncode == 0 and all(o in help_text.stdout for o in options),
