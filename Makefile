@@ -13,7 +13,7 @@ CMAKE_ARGS ?=
 XVFB = xvfb-run -a -s "-screen 0 1920x1080x24"
 RENDER = $(XVFB) $(BUILD_DIR)/bin/aperture-render
 
-.PHONY: all deps configure build demo test pictures fuzz install format clean
+.PHONY: all deps configure build demo test pictures evaluation report fuzz install format clean
 
 all: build
 
@@ -55,6 +55,16 @@ pictures: build
 	  docs/images/bunny-environment.png
 	@$(RENDER) -o docs/images/fuji-sunrise.png --env Testing/Data/env/sunrise.exr --size 800x500 \
 	  --cache $(BUILD_DIR)/demo/fuji-apertures.vti
+
+# The accuracy evaluation (docs/evaluation-tables.md, docs/images/evaluation-montage.png) and the
+# performance report (docs/performance.md and its plots); REPORT_MAX_LEVEL limits Table 1.
+REPORT_MAX_LEVEL ?= 3
+evaluation: build
+	@. $(BUILD_DIR)/env.sh && $(XVFB) $(PYTHON) Utilities/Evaluation/evaluate.py --out docs
+
+report: build
+	@. $(BUILD_DIR)/env.sh && $(XVFB) $(PYTHON) Utilities/Evaluation/performance.py \
+	  --bin $(BUILD_DIR)/bin --out docs --max-level $(REPORT_MAX_LEVEL)
 
 # libFuzzer on the EXR reading path, with AddressSanitizer and UndefinedBehaviorSanitizer, in a
 # Clang build of its own, for FUZZ_SECONDS (60) from random seed FUZZ_SEED (0: a new one each
