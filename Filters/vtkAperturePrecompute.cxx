@@ -38,7 +38,6 @@
 #include <vector>
 
 #if defined(__SSE__) || defined(_M_X64)
-#include <xmmintrin.h>
 #endif
 
 vtkStandardNewMacro(vtkAperturePrecompute);
@@ -47,26 +46,6 @@ namespace
 {
 constexpr double Pi = vtkMath::Pi();
 constexpr int Lanes = vtkApertureHemisphereSampler::Lanes;
-
-// Keeps denormals out of Embree's traversal, as Embree recommends, for the calling thread only.
-class FlushToZeroScope
-{
-public:
-#if defined(__SSE__) || defined(_M_X64)
-  FlushToZeroScope()
-    : Saved(_mm_getcsr())
-  {
-    _mm_setcsr(this->Saved | 0x8040); // FTZ and DAZ
-  }
-  ~FlushToZeroScope()
-  {
-    _mm_setcsr(this->Saved);
-  }
-
-private:
-  unsigned int Saved;
-#endif
-};
 
 // Where the results of one receiver go.
 struct Outputs
@@ -92,7 +71,7 @@ public:
 
   void operator()(vtkIdType begin, vtkIdType end) const
   {
-    FlushToZeroScope ftz;
+    vtkApertureRayScene::FlushToZero ftz;
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     alignas(64) RTCRay16 ray;

@@ -126,3 +126,15 @@ bool vtkApertureRayScene::Commit()
   rtcCommitScene(this->Scene);
   return !this->Failed();
 }
+
+//------------------------------------------------------------------------------
+bool vtkApertureRayScene::Build(
+  const vtkApertureSurface& receivers, const std::vector<vtkApertureSurface>& occluders)
+{
+  bool built = this->Initialize(std::string(), false) && this->AddSurface(receivers);
+  for (const vtkApertureSurface& occluder : occluders)
+  {
+    built = built && this->AddSurface(occluder);
+  }
+  return built && this->Commit();
+}

@@ -27,6 +27,11 @@
 
 #include <mutex>
 #include <string>
+#include <vector>
+
+#if defined(__SSE__) || defined(_M_X64)
+#include <xmmintrin.h>
+#endif
 
 class vtkApertureSurface;
 
@@ -54,7 +59,35 @@ public:
    */
   bool Commit();
 
+  /**
+   * Initialize() with the default device and BVH, every surface added, and Commit().
+   */
+  bool Build(const vtkApertureSurface& receivers, const std::vector<vtkApertureSurface>& occluders);
+
   RTCScene GetScene() const { return this->Scene; }
+
+  /**
+   * Keeps denormals out of Embree's traversal, as Embree recommends, for the calling thread
+   * while it exists.
+   */
+  class FlushToZero
+  {
+  public:
+#if defined(__SSE__) || defined(_M_X64)
+    FlushToZero()
+      : Saved(_mm_getcsr())
+    {
+      _mm_setcsr(this->Saved | 0x8040); // FTZ and DAZ
+    }
+    ~FlushToZero()
+    {
+      _mm_setcsr(this->Saved);
+    }
+
+  private:
+    unsigned int Saved;
+#endif
+  };
 
   /**
    * The first error Embree reported, empty if none.

@@ -14,6 +14,7 @@
 #include "vtkApertureRayScene.h"
 #include "vtkApertureSurface.h"
 #include "vtkEnvironmentMap.h"
+#include "vtkSphericalCap.h"
 
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
@@ -23,8 +24,6 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
-
-#include <xmmintrin.h>
 
 #include <algorithm>
 #include <atomic>
@@ -82,17 +81,14 @@ public:
     const double r = self->GetLightRadius();
     this->CosRadius = std::cos(r);
     // Cap solid angle over π sin² r: the light's radiance times the cap.
-    this->LightScale = 2.0 * Pi * (1.0 - this->CosRadius) / (Pi * std::sin(r) * std::sin(r));
+    this->LightScale =
+      vtkSphericalCap::SolidAngleFromCapRadius(r) / (Pi * std::sin(r) * std::sin(r));
     this->Components = this->Source == vtkApertureReference::ENVIRONMENT ? 3 : 1;
   }
 
   void operator()(vtkIdType begin, vtkIdType end) const
   {
-#if defined(__SSE__) || defined(_M_X64)
-    // Keep denormals out of Embree's traversal, for this thread only.
-    const unsigned int saved = _mm_getcsr();
-    _mm_setcsr(saved | 0x8040);
-#endif
+    vtkApertureRayScene::FlushToZero ftz;
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     alignas(64) RTCRay16 ray;
@@ -102,9 +98,6 @@ public:
     {
       this->Point(id, context, ray, valid, weight);
     }
-#if defined(__SSE__) || defined(_M_X64)
-    _mm_setcsr(saved);
-#endif
   }
 
 private:
@@ -310,48 +303,16 @@ int vtkApertureReference::RequestData(
       occluders.push_back(occluder);
     }
   }
-  // One local origin for everything keeps single precision where the geometry is.
-  double bounds[6];
-  vtkApertureSurface::InitializeBounds(bounds);
-  vtkApertureSurface::ExpandBounds(input, bounds);
-  for (vtkPolyData* occluder : occluders)
-  {
-    vtkApertureSurface::ExpandBounds(occluder, bounds);
-  }
-  double origin[3];
-  vtkApertureSurface::OriginOf(bounds, origin);
   std::string error;
   vtkApertureSurface receivers;
-  if (!receivers.SetPolyData(input, origin, error))
+  std::vector<vtkApertureSurface> occluderSurfaces;
+  if (!vtkApertureSurface::SetScene(input, occluders, receivers, occluderSurfaces, error))
   {
-    vtkErrorMacro("Cannot use the input: " << error << ".");
+    vtkErrorMacro(<< error);
     return 0;
   }
-  std::vector<vtkApertureSurface> occluderSurfaces(occluders.size());
-  vtkIdType triangles = receivers.GetNumberOfTriangles();
-  for (size_t i = 0; i < occluders.size(); ++i)
-  {
-    if (!occluderSurfaces[i].SetPolyData(occluders[i], origin, error))
-    {
-      vtkErrorMacro("Cannot use occluder " << i << ": " << error << ".");
-      return 0;
-    }
-    triangles += occluderSurfaces[i].GetNumberOfTriangles();
-  }
-  if (triangles == 0)
-  {
-    vtkErrorMacro("Neither the input nor the occluders have polygons or triangle strips: "
-                  "nothing casts shadows and points have no normals.");
-    return 0;
-  }
-
   vtkApertureRayScene scene;
-  bool built = scene.Initialize(std::string(), false) && scene.AddSurface(receivers);
-  for (const auto& s : occluderSurfaces)
-  {
-    built = built && scene.AddSurface(s);
-  }
-  if (!(built && scene.Commit()))
+  if (!scene.Build(receivers, occluderSurfaces))
   {
     vtkErrorMacro("Embree failed: " << scene.GetError());
     return 0;

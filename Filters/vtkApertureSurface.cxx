@@ -481,3 +481,44 @@ void vtkApertureSurface::AccumulateTriangleData(std::vector<float>& winding)
     this->EdgeLength[i] = edgeCount[i] ? edgeSum[i] / edgeCount[i] : 0.0f;
   }
 }
+
+//------------------------------------------------------------------------------
+bool vtkApertureSurface::SetScene(vtkPolyData* input, const std::vector<vtkPolyData*>& occluders,
+  vtkApertureSurface& receivers, std::vector<vtkApertureSurface>& occluderSurfaces,
+  std::string& error)
+{
+  // One local origin for everything keeps single precision where the geometry is.
+  double bounds[6];
+  InitializeBounds(bounds);
+  ExpandBounds(input, bounds);
+  for (vtkPolyData* occluder : occluders)
+  {
+    ExpandBounds(occluder, bounds);
+  }
+  double origin[3];
+  OriginOf(bounds, origin);
+  std::string problem;
+  if (!receivers.SetPolyData(input, origin, problem))
+  {
+    error = "Cannot use the input: " + problem + ".";
+    return false;
+  }
+  occluderSurfaces = std::vector<vtkApertureSurface>(occluders.size());
+  vtkIdType triangles = receivers.GetNumberOfTriangles();
+  for (size_t i = 0; i < occluders.size(); ++i)
+  {
+    if (!occluderSurfaces[i].SetPolyData(occluders[i], origin, problem))
+    {
+      error = "Cannot use occluder " + std::to_string(i) + ": " + problem + ".";
+      return false;
+    }
+    triangles += occluderSurfaces[i].GetNumberOfTriangles();
+  }
+  if (triangles == 0)
+  {
+    error = "Neither the input nor the occluders have polygons or triangle strips: nothing casts "
+            "shadows and points have no normals.";
+    return false;
+  }
+  return true;
+}

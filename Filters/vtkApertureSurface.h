@@ -68,6 +68,15 @@ public:
   bool SetPolyData(vtkPolyData* input, const double origin[3], std::string& error);
 
   /**
+   * Builds the surfaces of a scene of receivers and occluders (polydata), all around one local
+   * origin. Returns false with one sentence in `error` when one of them is unusable or none has
+   * a polygon or strip (then nothing casts shadows and points have no normals).
+   */
+  static bool SetScene(vtkPolyData* input, const std::vector<vtkPolyData*>& occluders,
+    vtkApertureSurface& receivers, std::vector<vtkApertureSurface>& occluderSurfaces,
+    std::string& error);
+
+  /**
    * Builds the surface of a 2D height field: grid point (i, j) raised by heightScale × height
    * along the grid's third axis; normals point to that side.
    */

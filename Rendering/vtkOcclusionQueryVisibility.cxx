@@ -292,38 +292,12 @@ int vtkOcclusionQueryVisibility::RequestData(
     }
   }
 
-  // One local origin for everything keeps single precision where the geometry is.
-  double bounds[6];
-  vtkApertureSurface::InitializeBounds(bounds);
-  vtkApertureSurface::ExpandBounds(input, bounds);
-  for (vtkPolyData* occluder : occluders)
-  {
-    vtkApertureSurface::ExpandBounds(occluder, bounds);
-  }
-  double origin[3];
-  vtkApertureSurface::OriginOf(bounds, origin);
   std::string error;
   vtkApertureSurface receivers;
-  if (!receivers.SetPolyData(input, origin, error))
+  std::vector<vtkApertureSurface> occluderSurfaces;
+  if (!vtkApertureSurface::SetScene(input, occluders, receivers, occluderSurfaces, error))
   {
-    vtkErrorMacro("Cannot use the input: " << error << ".");
-    return 0;
-  }
-  std::vector<vtkApertureSurface> occluderSurfaces(occluders.size());
-  vtkIdType triangles = receivers.GetNumberOfTriangles();
-  for (size_t i = 0; i < occluders.size(); ++i)
-  {
-    if (!occluderSurfaces[i].SetPolyData(occluders[i], origin, error))
-    {
-      vtkErrorMacro("Cannot use occluder " << i << ": " << error << ".");
-      return 0;
-    }
-    triangles += occluderSurfaces[i].GetNumberOfTriangles();
-  }
-  if (triangles == 0)
-  {
-    vtkErrorMacro("Neither the input nor the occluders have polygons or triangle strips: "
-                  "nothing casts shadows and points have no normals.");
+    vtkErrorMacro(<< error);
     return 0;
   }
 
@@ -364,13 +338,7 @@ int vtkOcclusionQueryVisibility::RequestData(
   if (!todo.empty() && this->Backend == RAY_CAST)
   {
     vtkApertureRayScene scene;
-    bool built = scene.Initialize(std::string(), false) && scene.AddSurface(receivers);
-    for (const auto& s : occluderSurfaces)
-    {
-      built = built && scene.AddSurface(s);
-    }
-    built = built && scene.Commit();
-    if (!built)
+    if (!scene.Build(receivers, occluderSurfaces))
     {
       vtkErrorMacro("Embree failed: " << scene.GetError());
       return 0;

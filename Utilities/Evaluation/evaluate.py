@@ -224,7 +224,7 @@ class Scene:
         samples = cap_samples(direction, radius)
         nearest = np.argmax(samples @ self.directions[:258].T, axis=1)
         share = np.bincount(nearest, minlength=258) / len(samples)
-        cap = 2 * math.pi * (1 - math.cos(radius))
+        cap = vtkSphericalCap.SolidAngleFromCapRadius(radius)
         return self.matrix[:, :258] @ (scale * cap * share)
 
 
