@@ -178,6 +178,7 @@ bool vtkApertureSurface::SetPolyData(vtkPolyData* input, const double origin[3],
     return false;
   }
   this->Allocate(n);
+  std::copy_n(origin, 3, this->Origin);
 
   std::vector<unsigned char> finite(n, 0);
   vtkPoints* points = input->GetPoints();
@@ -373,6 +374,7 @@ bool vtkApertureSurface::SetHeightField(vtkImageData* input, vtkDataArray* heigh
     error = "more than 2^32 grid points";
     return false;
   }
+  std::copy_n(origin, 3, this->Origin);
   this->Allocate(n);
 
   std::vector<unsigned char> finite(n, 0);

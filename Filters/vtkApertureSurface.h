@@ -90,6 +90,8 @@ public:
     return static_cast<vtkIdType>(this->Triangles.size() / 3);
   }
 
+  /// The local origin: a point's coordinates are Points + Origin.
+  double Origin[3] = { 0.0, 0.0, 0.0 };
   /// Local coordinates, 3 per point, plus one float of padding: Embree reads 16 bytes per vertex.
   std::vector<float> Points;
   /// Three point ids per triangle.

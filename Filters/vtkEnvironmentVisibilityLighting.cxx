@@ -130,6 +130,7 @@ int vtkEnvironmentVisibilityLighting::RequestData(
     static_cast<double>(environment->GetMTime()), static_cast<double>(this->UpAxis), this->Azimuth,
     this->BlurAngle };
   key.insert(key.end(), this->Orientation, this->Orientation + 9);
+  key.insert(key.end(), this->ObjectRotation, this->ObjectRotation + 9);
   if (key != this->LinearFor || this->Linear.size() != static_cast<size_t>(3 * n))
   {
     this->Environment->SetImage(environment);
@@ -137,8 +138,21 @@ int vtkEnvironmentVisibilityLighting::RequestData(
     this->Environment->SetAzimuth(this->Azimuth);
     this->Environment->SetOrientation(this->Orientation);
     this->Environment->SetBlurAngle(this->BlurAngle);
+    // The directions in the world, where the environment is.
     vtkNew<vtkDoubleArray> lightDirections, cells;
-    lightDirections->DeepCopy(directions);
+    lightDirections->SetNumberOfComponents(3);
+    lightDirections->SetNumberOfTuples(k);
+    for (int j = 0; j < k; ++j)
+    {
+      double l[3], world[3];
+      directions->GetTuple(j, l);
+      for (int r = 0; r < 3; ++r)
+      {
+        world[r] = this->ObjectRotation[3 * r] * l[0] + this->ObjectRotation[3 * r + 1] * l[1] +
+          this->ObjectRotation[3 * r + 2] * l[2];
+      }
+      lightDirections->SetTuple(j, world);
+    }
     this->Environment->CellRadiance(lightDirections, cells);
     // Each direction's radiance times its solid angle, over pi.
     std::vector<float> radiance(3 * k);
@@ -238,6 +252,12 @@ void vtkEnvironmentVisibilityLighting::PrintSelf(ostream& os, vtkIndent indent)
   }
   os << "\n";
   os << indent << "BlurAngle: " << this->BlurAngle << "\n";
+  os << indent << "ObjectRotation: " << this->ObjectRotation[0];
+  for (int i = 1; i < 9; ++i)
+  {
+    os << ", " << this->ObjectRotation[i];
+  }
+  os << "\n";
   os << indent << "Exposure: " << this->Exposure << "\n";
   os << indent << "Gamma: " << this->Gamma << "\n";
 }

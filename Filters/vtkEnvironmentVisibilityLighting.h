@@ -31,7 +31,10 @@
  *
  * Turning the environment (Azimuth, Orientation) or changing it needs no new visibility, only
  * a new pass of this filter, which keeps its filtered environment between updates. A change
- * of Exposure or Gamma only recomputes the colours.
+ * of Exposure or Gamma only recomputes the colours. Nor does a rigid motion of the object
+ * (Sattler et al. 2004, §6): the visibility stays in the object's coordinates and
+ * ObjectRotation turns its directions into the world before the environment is looked up;
+ * translations do not matter for a distant environment.
  *
  * @sa vtkOcclusionQueryVisibility vtkEnvironmentMap vtkOpenEXRReader
  */
@@ -84,6 +87,16 @@ public:
 
   ///@{
   /**
+   * The rotation (row-major 3 × 3) that takes the input's coordinates to the world, as the
+   * rotation part of the object's actor matrix: lightsphere direction l_j is looked up in the
+   * environment as R l_j. Default identity.
+   */
+  vtkSetVectorMacro(ObjectRotation, double, 9);
+  vtkGetVectorMacro(ObjectRotation, double, 9);
+  ///@}
+
+  ///@{
+  /**
    * Exposure in stops (the colours are c 2^Exposure) and the display gamma. Defaults 0 and 2.2.
    */
   vtkSetMacro(Exposure, double);
@@ -109,6 +122,7 @@ protected:
   double Azimuth = 0.0;
   double Orientation[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
   double BlurAngle = 0.0;
+  double ObjectRotation[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
   double Exposure = 0.0;
   double Gamma = 2.2;
 

@@ -17,18 +17,25 @@
 #include "vtkVisibilityRenderer.h"
 
 #include "vtkBitArray.h"
+#include "vtkCamera.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkProp3D.h"
 #include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkWeakPointer.h"
 
 #include <algorithm>
 #include <array>
@@ -49,9 +56,9 @@ using Bits = vtkVisibilityRenderer::Bits;
 constexpr size_t Chunk = 8;
 
 // Casts, for blocks of 64 points (so that no two threads share a word of the bit sets), one
-// occlusion ray per point and direction, 16 points to a packet. Points are taken in `order`
-// (neighbours together, so that a packet's rays stay coherent) and their bits set at their place
-// in that order.
+// occlusion ray per point and direction, 16 points to a packet. The points cast for are those of
+// `order` (neighbours together, so that a packet's rays stay coherent), their bits set at their
+// place in that order.
 class CastDirections
 {
 public:
@@ -74,7 +81,7 @@ public:
     context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
     alignas(64) RTCRay16 ray;
     alignas(64) int valid[16];
-    const vtkIdType n = this->Surface.GetNumberOfPoints();
+    const vtkIdType n = static_cast<vtkIdType>(this->Order.size());
     for (vtkIdType block = beginBlock; block < endBlock; ++block)
     {
       for (size_t j = 0; j < this->Dirs.size(); ++j)
@@ -85,10 +92,10 @@ public:
         {
           for (int lane = 0; lane < 16; ++lane)
           {
-            const vtkIdType id = first + lane < n ? this->Order[first + lane] : n;
+            const vtkIdType id = first + lane < n ? this->Order[first + lane] : -1;
             // Directions below a point's tangent plane are hidden by its own surface.
-            const float* normal = id < n ? this->Surface.GetNormal(id) : nullptr;
-            valid[lane] = id < n && this->Surface.Valid[id] &&
+            const float* normal = id >= 0 ? this->Surface.GetNormal(id) : nullptr;
+            valid[lane] = id >= 0 && this->Surface.Valid[id] &&
                 normal[0] * l[0] + normal[1] * l[1] + normal[2] * l[2] > 0.0
               ? -1
               : 0;
@@ -213,7 +220,38 @@ bool Bit(const Bits& bits, vtkIdType i)
 }
 
 //------------------------------------------------------------------------------
+class vtkOcclusionQueryVisibility::vtkInternals
+{
+public:
+  // What everything below was computed for: the geometry and the settings.
+  std::vector<vtkMTimeType> Key;
+  vtkApertureSurface Receivers;
+  std::vector<vtkApertureSurface> Occluders;
+  // The scene for OpenGL (receivers' points first, triangles in Morton order), built on demand.
+  bool SceneBuilt = false;
+  std::vector<float> Points;
+  std::vector<std::uint32_t> Triangles;
+  std::vector<std::uint32_t> UnsortedTriangles;
+  double Radius = 1.0;
+  // Whether the scene went to the GPU in this update.
+  bool Uploaded = false;
+  // One bit set of points per direction, in lightsphere order; point i's bits hold for its first
+  // Directions[i] directions.
+  std::vector<Bits> Computed;
+  std::vector<int> Directions;
+  // Vertex filtering: receiver triangles not seen yet, points that need visibility, and whether
+  // filtering goes on.
+  std::vector<std::uint32_t> Unseen;
+  std::vector<unsigned char> Seen;
+  bool Filtering = false;
+  vtkWeakPointer<vtkRenderer> ViewRenderer;
+  vtkWeakPointer<vtkProp3D> ViewProp;
+  std::unique_ptr<vtkVisibilityRenderer> Renderer;
+};
+
+//------------------------------------------------------------------------------
 vtkOcclusionQueryVisibility::vtkOcclusionQueryVisibility()
+  : Internals(new vtkInternals)
 {
   this->SetNumberOfInputPorts(2);
 }
@@ -245,6 +283,50 @@ const char* vtkOcclusionQueryVisibility::GetBackendAsString()
 }
 
 //------------------------------------------------------------------------------
+void vtkOcclusionQueryVisibility::SetViewRenderer(vtkRenderer* renderer)
+{
+  if (this->Internals->ViewRenderer != renderer)
+  {
+    this->Internals->ViewRenderer = renderer;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkRenderer* vtkOcclusionQueryVisibility::GetViewRenderer()
+{
+  return this->Internals->ViewRenderer;
+}
+
+//------------------------------------------------------------------------------
+void vtkOcclusionQueryVisibility::SetViewProp(vtkProp3D* prop)
+{
+  if (this->Internals->ViewProp != prop)
+  {
+    this->Internals->ViewProp = prop;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkProp3D* vtkOcclusionQueryVisibility::GetViewProp()
+{
+  return this->Internals->ViewProp;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOcclusionQueryVisibility::GetNumberOfUnseenTriangles()
+{
+  return static_cast<vtkIdType>(this->Internals->Unseen.size());
+}
+
+//------------------------------------------------------------------------------
+bool vtkOcclusionQueryVisibility::GetFilteringActive()
+{
+  return this->Internals->Filtering;
+}
+
+//------------------------------------------------------------------------------
 void vtkOcclusionQueryVisibility::AddOccluderConnection(vtkAlgorithmOutput* occluder)
 {
   this->AddInputConnection(1, occluder);
@@ -265,22 +347,271 @@ int vtkOcclusionQueryVisibility::FillInputPortInformation(int port, vtkInformati
 //------------------------------------------------------------------------------
 void vtkOcclusionQueryVisibility::ReleaseGraphicsResources(vtkWindow* window)
 {
-  if (this->Renderer)
+  if (this->Internals->Renderer)
   {
-    this->Renderer->ReleaseGraphicsResources(window);
+    this->Internals->Renderer->ReleaseGraphicsResources(window);
   }
+}
+
+//------------------------------------------------------------------------------
+bool vtkOcclusionQueryVisibility::PrepareOpenGL(bool needStorage, std::string& error)
+{
+  vtkInternals& in = *this->Internals;
+  // The OpenGL context: the caller's window, or an off-screen one of our own.
+  vtkRenderWindow* window = this->RenderWindow;
+  if (!window)
+  {
+    if (!this->OwnWindow)
+    {
+      std::string problem;
+      void* display = nullptr;
+      if (!vtkApertureDisplay::Get(display, problem))
+      {
+        error = "No OpenGL context: " + problem + ".";
+        return false;
+      }
+      this->OwnWindow = vtkRenderWindow::New();
+      if (display)
+      {
+        this->OwnWindow->SetDisplayId(display);
+      }
+      this->OwnWindow->SetOffScreenRendering(1);
+      this->OwnWindow->SetSize(16, 16);
+      if (!this->OwnWindow->SupportsOpenGL())
+      {
+        error = "No usable OpenGL context: VTK needs OpenGL 3.2 and this display offers less.";
+        this->OwnWindow->Delete();
+        this->OwnWindow = nullptr;
+        return false;
+      }
+    }
+    window = this->OwnWindow;
+  }
+  auto* glWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
+  if (!glWindow)
+  {
+    error =
+      std::string("The render window is not an OpenGL window (") + window->GetClassName() + ").";
+    return false;
+  }
+  glWindow->Initialize();
+  glWindow->MakeCurrent();
+  const std::string missing = vtkVisibilityRenderer::Missing(needStorage);
+  if (!missing.empty())
+  {
+    error = std::string("The ") +
+      (this->Backend == DEPTH_COMPARE ? "DepthCompare backend"
+                                      : "camera pass of vertex filtering") +
+      " needs " + missing + ", which this OpenGL context lacks.";
+    return false;
+  }
+  if (in.Uploaded)
+  {
+    return true;
+  }
+  if (!in.SceneBuilt)
+  {
+    // Receivers first, then the occluders' points and triangles. (A surface's Points hold 3
+    // floats per point and one of padding for Embree at the end.)
+    const vtkIdType n = in.Receivers.GetNumberOfPoints();
+    in.Points.assign(in.Receivers.Points.begin(), in.Receivers.Points.begin() + 3 * n);
+    std::vector<std::uint32_t> triangles = in.Receivers.Triangles;
+    for (const auto& s : in.Occluders)
+    {
+      const auto base = static_cast<std::uint32_t>(in.Points.size() / 3);
+      in.Points.insert(
+        in.Points.end(), s.Points.begin(), s.Points.begin() + 3 * s.GetNumberOfPoints());
+      for (std::uint32_t id : s.Triangles)
+      {
+        triangles.push_back(base + id);
+      }
+    }
+    // A deforming mesh keeps its triangles, and their order: they are not uploaded again.
+    if (triangles != in.UnsortedTriangles)
+    {
+      in.UnsortedTriangles = triangles;
+      SortTriangles(in.Points, triangles);
+      in.Triangles.swap(triangles);
+    }
+    double radius = 0.0;
+    for (size_t p = 0; p < in.Points.size(); p += 3)
+    {
+      const double r2 = double(in.Points[p]) * in.Points[p] +
+        double(in.Points[p + 1]) * in.Points[p + 1] + double(in.Points[p + 2]) * in.Points[p + 2];
+      if (std::isfinite(r2))
+      {
+        radius = std::max(radius, std::sqrt(r2));
+      }
+    }
+    // A margin so that nothing touches the near and far planes.
+    in.Radius = radius > 0.0 ? 1.01 * radius : 1.0;
+    in.SceneBuilt = true;
+  }
+  if (!in.Renderer)
+  {
+    in.Renderer.reset(new vtkVisibilityRenderer);
+  }
+  if (!in.Renderer->SetScene(glWindow, in.Points, in.Triangles, in.Receivers.GetNumberOfPoints(),
+        in.Radius, this->DepthResolution, this->PolygonOffsetFactor, this->PolygonOffsetUnits,
+        error))
+  {
+    error = "OpenGL failed: " + error + ".";
+    return false;
+  }
+  this->UploadedBytes = in.Renderer->GetUploadedBytes();
+  in.Uploaded = true;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOcclusionQueryVisibility::UpdateSeen(std::string& error)
+{
+  vtkInternals& in = *this->Internals;
+  vtkRenderer* renderer = in.ViewRenderer;
+  vtkCamera* camera = renderer->GetActiveCamera();
+  int width = renderer->GetSize()[0], height = renderer->GetSize()[1];
+  if (width <= 0 || height <= 0)
+  {
+    // Not rendered yet: the window's size, or VTK's default.
+    const int* size =
+      renderer->GetRenderWindow() ? renderer->GetRenderWindow()->GetSize() : nullptr;
+    width = size && size[0] > 0 ? size[0] : 300;
+    height = size && size[1] > 0 ? size[1] : 300;
+  }
+  if (!this->PrepareOpenGL(this->Backend != OCCLUSION_QUERY, error))
+  {
+    return false;
+  }
+
+  // Local coordinates to the world (the prop's matrix after the local origin), then to the eye.
+  vtkNew<vtkMatrix4x4> local;
+  for (int c = 0; c < 3; ++c)
+  {
+    local->SetElement(c, 3, in.Receivers.Origin[c]);
+  }
+  vtkNew<vtkMatrix4x4> model;
+  if (in.ViewProp)
+  {
+    vtkMatrix4x4::Multiply4x4(in.ViewProp->GetMatrix(), local, model);
+  }
+  else
+  {
+    model->DeepCopy(local);
+  }
+  vtkNew<vtkMatrix4x4> eye;
+  vtkMatrix4x4::Multiply4x4(camera->GetViewTransformMatrix(), model, eye);
+  // Near and far planes around the scene's bounding sphere (the camera's clipping range may
+  // not have been reset for this view yet).
+  double scale = 0.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    scale = std::max(scale,
+      std::sqrt(eye->GetElement(0, c) * eye->GetElement(0, c) +
+        eye->GetElement(1, c) * eye->GetElement(1, c) +
+        eye->GetElement(2, c) * eye->GetElement(2, c)));
+  }
+  const double radius = in.Radius * scale;
+  const double depth = -eye->GetElement(2, 3);
+  const double aspect = static_cast<double>(width) / height;
+  double far = depth + radius;
+  double near = depth - radius;
+  vtkNew<vtkMatrix4x4> projection;
+  projection->Zero();
+  if (camera->GetParallelProjection())
+  {
+    const double s = camera->GetParallelScale();
+    projection->SetElement(0, 0, 1.0 / (s * aspect));
+    projection->SetElement(1, 1, 1.0 / s);
+    projection->SetElement(2, 2, -2.0 / (far - near));
+    projection->SetElement(2, 3, -(far + near) / (far - near));
+    projection->SetElement(3, 3, 1.0);
+  }
+  else
+  {
+    if (far <= 0.0)
+    {
+      // The scene is behind the camera: nothing is seen.
+      return true;
+    }
+    near = std::max(near, 1e-3 * far);
+    const double t = std::tan(vtkMath::RadiansFromDegrees(camera->GetViewAngle()) / 2.0);
+    const double fy = camera->GetUseHorizontalViewAngle() ? aspect / t : 1.0 / t;
+    projection->SetElement(0, 0, fy / aspect);
+    projection->SetElement(1, 1, fy);
+    projection->SetElement(2, 2, (far + near) / (near - far));
+    projection->SetElement(2, 3, 2.0 * far * near / (near - far));
+    projection->SetElement(3, 2, -1.0);
+  }
+  vtkNew<vtkMatrix4x4> clip;
+  vtkMatrix4x4::Multiply4x4(projection, eye, clip);
+  float matrix[16];
+  for (int row = 0; row < 4; ++row)
+  {
+    for (int column = 0; column < 4; ++column)
+    {
+      matrix[4 * column + row] = static_cast<float>(clip->GetElement(row, column));
+    }
+  }
+
+  const std::vector<std::uint32_t>& triangles = in.Receivers.Triangles;
+  std::vector<std::uint32_t> candidates;
+  candidates.reserve(3 * in.Unseen.size());
+  for (std::uint32_t t : in.Unseen)
+  {
+    candidates.insert(candidates.end(), &triangles[3 * t], &triangles[3 * t + 3]);
+  }
+  std::vector<char> seen;
+  if (!in.Renderer->ViewVisible(
+        matrix, width, height, candidates, this->Backend == OCCLUSION_QUERY, seen, error))
+  {
+    error = "OpenGL failed in the camera pass: " + error + ".";
+    return false;
+  }
+  std::vector<std::uint32_t> unseen;
+  for (size_t i = 0; i < in.Unseen.size(); ++i)
+  {
+    if (!seen[i])
+    {
+      unseen.push_back(in.Unseen[i]);
+    }
+  }
+  // Below the threshold, the rest is computed now and filtering stops.
+  const bool stop = static_cast<double>(unseen.size()) <=
+    this->FilteringThreshold * static_cast<double>(in.Receivers.GetNumberOfTriangles());
+  for (size_t i = 0; i < in.Unseen.size(); ++i)
+  {
+    if (seen[i] || stop)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        in.Seen[triangles[3 * in.Unseen[i] + c]] = 1;
+      }
+    }
+  }
+  in.Unseen = stop ? std::vector<std::uint32_t>() : unseen;
+  in.Filtering = !stop;
+  return true;
 }
 
 //------------------------------------------------------------------------------
 int vtkOcclusionQueryVisibility::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  vtkInternals& in = *this->Internals;
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   this->NumberOfDepthPasses = 0;
+  this->NumberOfComputedPoints = 0;
+  this->UploadedBytes = 0;
+  in.Uploaded = false;
   if (!input || input->GetNumberOfPoints() == 0)
   {
     vtkErrorMacro("The input is empty: there are no points to compute visibility for.");
+    return 0;
+  }
+  if (this->VertexFiltering && !in.ViewRenderer)
+  {
+    vtkErrorMacro("Vertex filtering follows a camera: SetViewRenderer() is needed.");
     return 0;
   }
   std::vector<vtkPolyData*> occluders;
@@ -292,12 +623,61 @@ int vtkOcclusionQueryVisibility::RequestData(
     }
   }
 
+  // Visibility computed before for the same geometry and settings is kept: a higher level adds
+  // its new directions, filtering adds the points it has newly seen.
+  auto bitsOf = [](double value)
+  {
+    vtkMTimeType bits = 0;
+    std::memcpy(&bits, &value, std::min(sizeof(bits), sizeof(value)));
+    return bits;
+  };
+  std::vector<vtkMTimeType> key = { input->GetMTime(), static_cast<vtkMTimeType>(this->Backend),
+    static_cast<vtkMTimeType>(this->DepthResolution), bitsOf(this->PolygonOffsetFactor),
+    bitsOf(this->PolygonOffsetUnits), bitsOf(this->RayOffset),
+    static_cast<vtkMTimeType>(this->VertexFiltering) };
+  for (vtkPolyData* occluder : occluders)
+  {
+    key.push_back(occluder->GetMTime());
+  }
   std::string error;
-  vtkApertureSurface receivers;
-  std::vector<vtkApertureSurface> occluderSurfaces;
-  if (!vtkApertureSurface::SetScene(input, occluders, receivers, occluderSurfaces, error))
+  if (key != in.Key)
+  {
+    in.Key.clear();
+    if (!vtkApertureSurface::SetScene(input, occluders, in.Receivers, in.Occluders, error))
+    {
+      vtkErrorMacro(<< error);
+      return 0;
+    }
+    const vtkIdType n = in.Receivers.GetNumberOfPoints();
+    in.SceneBuilt = false;
+    in.Computed.clear();
+    in.Directions.assign(n, 0);
+    // Without filtering every point is needed; with it, those of triangles not seen yet are not.
+    in.Seen.assign(n, 1);
+    in.Unseen.clear();
+    in.Filtering = this->VertexFiltering;
+    if (in.Filtering)
+    {
+      const vtkIdType triangles = in.Receivers.GetNumberOfTriangles();
+      in.Unseen.resize(triangles);
+      for (vtkIdType t = 0; t < triangles; ++t)
+      {
+        in.Unseen[t] = static_cast<std::uint32_t>(t);
+        for (int c = 0; c < 3; ++c)
+        {
+          in.Seen[in.Receivers.Triangles[3 * t + c]] = 0;
+        }
+      }
+    }
+    in.Key = key;
+  }
+  const vtkApertureSurface& receivers = in.Receivers;
+  const vtkIdType n = receivers.GetNumberOfPoints();
+
+  if (in.Filtering && !this->UpdateSeen(error))
   {
     vtkErrorMacro(<< error);
+    in.Key.clear();
     return 0;
   }
 
@@ -309,77 +689,94 @@ int vtkOcclusionQueryVisibility::RequestData(
   {
     sphere->GetDirection(j, directions[j].data());
   }
-
-  // Visibility computed before for the same geometry and settings is kept; a higher level adds
-  // its new directions.
-  auto bitsOf = [](double value)
+  if (in.Computed.size() < static_cast<size_t>(k))
   {
-    vtkMTimeType bits = 0;
-    std::memcpy(&bits, &value, std::min(sizeof(bits), sizeof(value)));
-    return bits;
+    in.Computed.resize(k, Bits((n + 63) / 64, 0));
+  }
+
+  // The points that need directions, and the first direction one of them lacks.
+  std::vector<std::uint32_t> todo;
+  int first = k;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (in.Seen[i] && in.Directions[i] < k)
+    {
+      todo.push_back(static_cast<std::uint32_t>(i));
+      first = std::min(first, in.Directions[i]);
+    }
+  }
+  const Directions missing(directions.begin() + std::min(first, k), directions.end());
+  const std::vector<std::uint32_t>* subset =
+    static_cast<vtkIdType>(todo.size()) == n ? nullptr : &todo;
+  // New bits are or-ed in: a point given a direction again gets the same bit.
+  auto merge = [&](std::vector<Bits>& fresh, size_t offset)
+  {
+    for (size_t j = 0; j < fresh.size(); ++j)
+    {
+      Bits& bits = in.Computed[first + offset + j];
+      for (size_t w = 0; w < bits.size(); ++w)
+      {
+        bits[w] |= fresh[j][w];
+      }
+    }
   };
-  std::vector<vtkMTimeType> key = { input->GetMTime(), static_cast<vtkMTimeType>(this->Backend),
-    static_cast<vtkMTimeType>(this->DepthResolution), bitsOf(this->PolygonOffsetFactor),
-    bitsOf(this->PolygonOffsetUnits), bitsOf(this->RayOffset) };
-  for (vtkPolyData* occluder : occluders)
-  {
-    key.push_back(occluder->GetMTime());
-  }
-  if (key != this->ComputedFor)
-  {
-    this->Computed.clear();
-    this->ComputedFor = key;
-  }
-  const Directions todo(
-    directions.begin() + std::min<size_t>(this->Computed.size(), k), directions.end());
 
-  const vtkIdType n = receivers.GetNumberOfPoints();
   this->UpdateProgress(0.0);
+  bool aborted = false;
   if (!todo.empty() && this->Backend == RAY_CAST)
   {
     vtkApertureRayScene scene;
-    if (!scene.Build(receivers, occluderSurfaces))
+    if (!scene.Build(receivers, in.Occluders))
     {
       vtkErrorMacro("Embree failed: " << scene.GetError());
       return 0;
     }
-    const vtkIdType blocks = (n + 63) / 64;
+    const auto m = static_cast<vtkIdType>(todo.size());
+    const vtkIdType blocks = (m + 63) / 64;
     // Points in Morton order, so that each packet's rays start close together.
-    const std::vector<std::uint32_t> codes =
-      MortonCodes(receivers.Points, receivers.Points.data(), static_cast<size_t>(n));
-    std::vector<vtkIdType> order(n);
-    for (vtkIdType i = 0; i < n; ++i)
+    std::vector<float> positions(3 * todo.size());
+    for (size_t i = 0; i < todo.size(); ++i)
     {
-      order[i] = i;
+      std::copy_n(&receivers.Points[3 * todo[i]], 3, &positions[3 * i]);
     }
-    std::sort(order.begin(), order.end(),
-      [&codes](vtkIdType a, vtkIdType b) { return codes[a] < codes[b]; });
-    for (size_t first = 0; first < todo.size(); first += Chunk)
+    const std::vector<std::uint32_t> codes =
+      MortonCodes(receivers.Points, positions.data(), todo.size());
+    std::vector<vtkIdType> rank(todo.size());
+    for (size_t i = 0; i < rank.size(); ++i)
+    {
+      rank[i] = static_cast<vtkIdType>(i);
+    }
+    std::sort(
+      rank.begin(), rank.end(), [&codes](vtkIdType a, vtkIdType b) { return codes[a] < codes[b]; });
+    std::vector<vtkIdType> order(todo.size());
+    for (size_t i = 0; i < order.size(); ++i)
+    {
+      order[i] = todo[rank[i]];
+    }
+    for (size_t begin = 0; begin < missing.size() && !aborted; begin += Chunk)
     {
       const Directions chunk(
-        todo.begin() + first, todo.begin() + std::min(todo.size(), first + Chunk));
+        missing.begin() + begin, missing.begin() + std::min(missing.size(), begin + Chunk));
       std::vector<Bits> visible(chunk.size(), Bits(blocks, 0));
       vtkSMPTools::For(0, blocks, 4,
         CastDirections(receivers, order, scene.GetScene(), chunk, this->RayOffset, visible));
+      std::vector<Bits> fresh;
       for (const Bits& ordered : visible)
       {
-        Bits bits(blocks, 0);
-        for (vtkIdType i = 0; i < n; ++i)
+        Bits bits((n + 63) / 64, 0);
+        for (vtkIdType i = 0; i < m; ++i)
         {
           if (Bit(ordered, i))
           {
             bits[order[i] / 64] |= std::uint64_t(1) << (order[i] % 64);
           }
         }
-        this->Computed.push_back(std::move(bits));
+        fresh.push_back(std::move(bits));
       }
+      merge(fresh, begin);
       this->NumberOfDepthPasses += static_cast<int>(chunk.size());
-      this->UpdateProgress(static_cast<double>(this->Computed.size()) / k);
-      if (this->GetAbortExecute())
-      {
-        output->Initialize();
-        return 1;
-      }
+      this->UpdateProgress(static_cast<double>(begin + chunk.size()) / missing.size());
+      aborted = this->GetAbortExecute() != 0;
     }
     const std::string embreeError = scene.GetError();
     if (!embreeError.empty())
@@ -390,126 +787,61 @@ int vtkOcclusionQueryVisibility::RequestData(
   }
   else if (!todo.empty())
   {
-    // The OpenGL context: the caller's window, or an off-screen one of our own.
-    vtkRenderWindow* window = this->RenderWindow;
-    if (!window)
+    if (!this->PrepareOpenGL(this->Backend == DEPTH_COMPARE, error))
     {
-      if (!this->OwnWindow)
-      {
-        std::string problem;
-        void* display = nullptr;
-        if (!vtkApertureDisplay::Get(display, problem))
-        {
-          vtkErrorMacro("No OpenGL context: " << problem << ". SetBackendToRayCast() needs none.");
-          return 0;
-        }
-        this->OwnWindow = vtkRenderWindow::New();
-        if (display)
-        {
-          this->OwnWindow->SetDisplayId(display);
-        }
-        this->OwnWindow->SetOffScreenRendering(1);
-        this->OwnWindow->SetSize(16, 16);
-        if (!this->OwnWindow->SupportsOpenGL())
-        {
-          vtkErrorMacro("No usable OpenGL context: VTK needs OpenGL 3.2 and "
-            << "this display offers less. SetBackendToRayCast() needs none.");
-          this->OwnWindow->Delete();
-          this->OwnWindow = nullptr;
-          return 0;
-        }
-      }
-      window = this->OwnWindow;
-    }
-    auto* glWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
-    if (!glWindow)
-    {
-      vtkErrorMacro("The render window is not an OpenGL window ("
-        << window->GetClassName() << "). SetBackendToRayCast() needs none.");
+      vtkErrorMacro(<< error << " SetBackendToRayCast() needs no OpenGL.");
+      in.Key.clear();
       return 0;
     }
-    glWindow->Initialize();
-    glWindow->MakeCurrent();
-    const std::string missing = vtkVisibilityRenderer::Missing(this->Backend == DEPTH_COMPARE);
-    if (!missing.empty())
-    {
-      vtkErrorMacro("The " << this->GetBackendAsString() << " backend needs " << missing
-                           << ", which this OpenGL context lacks. SetBackendToRayCast() needs "
-                              "no OpenGL.");
-      return 0;
-    }
-
-    // The scene on the GPU: receivers first, then the occluders' points and triangles.
-    // (A surface's Points hold 3 floats per point and one of padding for Embree at the end.)
-    std::vector<float> points(receivers.Points.begin(), receivers.Points.begin() + 3 * n);
-    std::vector<std::uint32_t> indices(receivers.Triangles);
-    for (const auto& s : occluderSurfaces)
-    {
-      const auto base = static_cast<std::uint32_t>(points.size() / 3);
-      points.insert(points.end(), s.Points.begin(), s.Points.begin() + 3 * s.GetNumberOfPoints());
-      for (std::uint32_t id : s.Triangles)
-      {
-        indices.push_back(base + id);
-      }
-    }
-    SortTriangles(points, indices);
-    double radius = 0.0;
-    for (size_t p = 0; p < points.size(); p += 3)
-    {
-      const double r2 = double(points[p]) * points[p] + double(points[p + 1]) * points[p + 1] +
-        double(points[p + 2]) * points[p + 2];
-      if (std::isfinite(r2))
-      {
-        radius = std::max(radius, std::sqrt(r2));
-      }
-    }
-    // A margin so that nothing touches the near and far planes.
-    radius = radius > 0.0 ? 1.01 * radius : 1.0;
-    if (!this->Renderer)
-    {
-      this->Renderer.reset(new vtkVisibilityRenderer);
-    }
-    if (!this->Renderer->SetScene(glWindow, points, indices, n, radius, this->DepthResolution,
-          this->PolygonOffsetFactor, this->PolygonOffsetUnits, error))
-    {
-      vtkErrorMacro("OpenGL failed: " << error << ".");
-      return 0;
-    }
-    const size_t before = this->Computed.size();
     bool ok = true;
+    const int passesBefore = in.Renderer->GetNumberOfDepthPasses();
     if (this->Backend == DEPTH_COMPARE)
     {
       // All directions at once, so that each can be paired with its opposite.
-      ok = this->Renderer->DepthCompare(todo, this->Computed, error,
+      std::vector<Bits> fresh;
+      ok = in.Renderer->DepthCompare(
+        missing, fresh, error,
         [&](size_t done)
         {
-          this->UpdateProgress(static_cast<double>(before + done) / k);
+          this->UpdateProgress(static_cast<double>(done) / missing.size());
           return !this->GetAbortExecute();
-        });
+        },
+        subset);
+      if (ok)
+      {
+        merge(fresh, 0);
+      }
     }
-    for (size_t first = 0; ok && this->Backend == OCCLUSION_QUERY && first < todo.size();
-         first += Chunk)
+    for (size_t begin = 0; ok && this->Backend == OCCLUSION_QUERY && begin < missing.size();
+         begin += Chunk)
     {
       const Directions chunk(
-        todo.begin() + first, todo.begin() + std::min(todo.size(), first + Chunk));
-      ok = this->Renderer->OcclusionQuery(chunk, this->Computed, error);
-      this->UpdateProgress(static_cast<double>(this->Computed.size()) / k);
+        missing.begin() + begin, missing.begin() + std::min(missing.size(), begin + Chunk));
+      std::vector<Bits> fresh;
+      ok = in.Renderer->OcclusionQuery(chunk, fresh, error, subset);
+      merge(fresh, begin);
+      this->UpdateProgress(static_cast<double>(begin + chunk.size()) / missing.size());
       ok = ok && !this->GetAbortExecute();
     }
-    this->NumberOfDepthPasses = this->Renderer->GetNumberOfDepthPasses();
-    if (this->GetAbortExecute())
-    {
-      this->Computed.resize(before);
-      output->Initialize();
-      return 1;
-    }
-    if (!ok)
+    this->NumberOfDepthPasses = in.Renderer->GetNumberOfDepthPasses() - passesBefore;
+    aborted = this->GetAbortExecute() != 0;
+    if (!ok && !aborted)
     {
       vtkErrorMacro("OpenGL failed: " << error << ".");
-      this->Computed.clear();
+      in.Key.clear();
       return 0;
     }
   }
+  if (aborted)
+  {
+    output->Initialize();
+    return 1;
+  }
+  for (std::uint32_t i : todo)
+  {
+    in.Directions[i] = k;
+  }
+  this->NumberOfComputedPoints = static_cast<vtkIdType>(todo.size());
 
   // The output: the input, the arrays, and the lightsphere.
   output->ShallowCopy(input);
@@ -518,6 +850,14 @@ int vtkOcclusionQueryVisibility::RequestData(
   {
     pd->SetNormals(receivers.Normals);
   }
+  // Point i sees direction j when it is above its tangent plane and its bit is set.
+  auto sees = [&](vtkIdType i, int j, double& cosine)
+  {
+    const float* normal = receivers.GetNormal(i);
+    cosine =
+      normal[0] * directions[j][0] + normal[1] * directions[j][1] + normal[2] * directions[j][2];
+    return receivers.Valid[i] && cosine > 0.0 && j < in.Directions[i] && Bit(in.Computed[j], i);
+  };
   if (this->ComputeVisibility)
   {
     vtkNew<vtkFloatArray> visibility;
@@ -530,14 +870,10 @@ int vtkOcclusionQueryVisibility::RequestData(
       {
         for (vtkIdType i = begin; i < end; ++i)
         {
-          const float* normal = receivers.GetNormal(i);
           for (int j = 0; j < k; ++j)
           {
-            const double c = normal[0] * directions[j][0] + normal[1] * directions[j][1] +
-              normal[2] * directions[j][2];
-            values[i * k + j] = receivers.Valid[i] && c > 0.0 && Bit(this->Computed[j], i)
-              ? static_cast<float>(c)
-              : 0.0f;
+            double c = 0.0;
+            values[i * k + j] = sees(i, j, c) ? static_cast<float>(c) : 0.0f;
           }
         }
       });
@@ -551,15 +887,25 @@ int vtkOcclusionQueryVisibility::RequestData(
     bits->SetNumberOfTuples(n);
     for (vtkIdType i = 0; i < n; ++i)
     {
-      const float* normal = receivers.GetNormal(i);
       for (int j = 0; j < k; ++j)
       {
-        const double c = normal[0] * directions[j][0] + normal[1] * directions[j][1] +
-          normal[2] * directions[j][2];
-        bits->SetValue(i * k + j, receivers.Valid[i] && c > 0.0 && Bit(this->Computed[j], i));
+        double c = 0.0;
+        bits->SetValue(i * k + j, sees(i, j, c));
       }
     }
     pd->AddArray(bits);
+  }
+  if (this->VertexFiltering)
+  {
+    // Which points have their visibility yet: those of triangles not seen have none.
+    vtkNew<vtkUnsignedCharArray> done;
+    done->SetName("VisibilityComputed");
+    done->SetNumberOfTuples(n);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      done->SetValue(i, in.Directions[i] >= k ? 1 : 0);
+    }
+    pd->AddArray(done);
   }
   vtkSmartPointer<vtkDoubleArray> lightDirections;
   lightDirections.TakeReference(sphere->NewDirections());
@@ -592,6 +938,14 @@ void vtkOcclusionQueryVisibility::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RayOffset: " << this->RayOffset << "\n";
   os << indent << "ComputeVisibility: " << (this->ComputeVisibility ? "On" : "Off") << "\n";
   os << indent << "ComputeVisibilityBits: " << (this->ComputeVisibilityBits ? "On" : "Off") << "\n";
+  os << indent << "VertexFiltering: " << (this->VertexFiltering ? "On" : "Off") << "\n";
+  os << indent << "FilteringThreshold: " << this->FilteringThreshold << "\n";
+  os << indent << "ViewRenderer: " << this->Internals->ViewRenderer.GetPointer() << "\n";
+  os << indent << "ViewProp: " << this->Internals->ViewProp.GetPointer() << "\n";
   os << indent << "RenderWindow: " << this->RenderWindow << "\n";
   os << indent << "NumberOfDepthPasses: " << this->NumberOfDepthPasses << "\n";
+  os << indent << "NumberOfComputedPoints: " << this->NumberOfComputedPoints << "\n";
+  os << indent << "NumberOfUnseenTriangles: " << this->Internals->Unseen.size() << "\n";
+  os << indent << "FilteringActive: " << (this->Internals->Filtering ? "Yes" : "No") << "\n";
+  os << indent << "UploadedBytes: " << this->UploadedBytes << "\n";
 }

@@ -43,11 +43,29 @@
  * next level, so raising the level on an input already computed only renders the new directions
  * (GetNumberOfDepthPasses() counts what the last update rendered).
  *
+ * Dynamic scenes (Sattler et al. 2004, §4 and §6):
+ * - when the input or an occluder changes (a deforming mesh, objects moving relative to each
+ *   other), the next update recomputes; the GPU gets only what changed (a deforming mesh's
+ *   points, not its triangles: GetUploadedBytes());
+ * - vertex filtering (VertexFilteringOn() with SetViewRenderer()): the filter keeps the list U
+ *   of receiver triangles the camera has not seen yet. Each update renders the scene's depth from
+ *   the renderer's camera and tests every triangle of U against it; those now seen leave U, and
+ *   their three points get their visibility (triangles, not points, so that no visible triangle
+ *   has a corner without visibility). Points of triangles never seen have zero visibility. When
+ *   U is smaller than FilteringThreshold of all triangles, the rest is computed and filtering
+ *   stops until the geometry changes. A camera move alone does not modify this filter: call
+ *   Modified() when the view changes (vtkDynamicVisibilityDriver does);
+ * - rigid motion of a single object needs no new visibility: give its rotation to
+ *   vtkEnvironmentVisibilityLighting::SetObjectRotation() and its actor to SetViewProp();
+ * - level changes reuse what is computed (the adaptive lightsphere of §4.2): each point
+ *   remembers how many directions it has, so raising the level renders only the new ones, for
+ *   the points that need them.
+ *
  * Progress events fire between directions and an abort stops the computation there. A missing
  * OpenGL feature, or no OpenGL context at all, is an error that names what is missing; RAY_CAST
  * still works.
  *
- * @sa vtkLightSphere vtkAperturePrecompute
+ * @sa vtkLightSphere vtkAperturePrecompute vtkDynamicVisibilityDriver
  */
 
 #ifndef vtkOcclusionQueryVisibility_h
@@ -56,12 +74,12 @@
 #include "vtkApertureLightingModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
-#include <cstdint> // For std::uint64_t
-#include <memory>  // For std::unique_ptr
-#include <vector>  // For std::vector
+#include <memory> // For std::unique_ptr
+#include <string> // For std::string
 
+class vtkProp3D;
 class vtkRenderWindow;
-class vtkVisibilityRenderer;
+class vtkRenderer;
 class vtkWindow;
 
 class VTKAPERTURELIGHTING_EXPORT vtkOcclusionQueryVisibility : public vtkPolyDataAlgorithm
@@ -148,6 +166,37 @@ public:
   vtkGetObjectMacro(RenderWindow, vtkRenderWindow);
   ///@}
 
+  ///@{
+  /**
+   * Vertex filtering: compute visibility only for the points of triangles the view renderer's
+   * camera has seen. Off by default; needs SetViewRenderer() and OpenGL (whatever the backend).
+   */
+  vtkSetMacro(VertexFiltering, bool);
+  vtkGetMacro(VertexFiltering, bool);
+  vtkBooleanMacro(VertexFiltering, bool);
+  ///@}
+
+  ///@{
+  /**
+   * When fewer than this fraction of the receiver triangles remain unseen, filtering stops and
+   * computes them all: testing them costs more than it saves. Clamped to [0, 1]. Default 0.05.
+   */
+  vtkSetClampMacro(FilteringThreshold, double, 0.0, 1.0);
+  vtkGetMacro(FilteringThreshold, double);
+  ///@}
+
+  ///@{
+  /**
+   * The renderer whose camera and viewport vertex filtering follows, and the prop (actor) that
+   * places the input in its world (optional: identity). Held weakly, so that an actor showing
+   * this filter's output makes no reference loop.
+   */
+  void SetViewRenderer(vtkRenderer* renderer);
+  vtkRenderer* GetViewRenderer();
+  void SetViewProp(vtkProp3D* prop);
+  vtkProp3D* GetViewProp();
+  ///@}
+
   /**
    * Adds an occluder on port 1: it casts shadows but gets no visibility.
    */
@@ -159,6 +208,24 @@ public:
    * update are not counted.
    */
   vtkGetMacro(NumberOfDepthPasses, int);
+
+  /**
+   * Points given new directions in the last update (all of them without filtering, when
+   * anything was computed).
+   */
+  vtkGetMacro(NumberOfComputedPoints, vtkIdType);
+
+  /**
+   * Receiver triangles the camera has not seen yet (vertex filtering), and whether filtering is
+   * still going on (it stops below FilteringThreshold).
+   */
+  vtkIdType GetNumberOfUnseenTriangles();
+  bool GetFilteringActive();
+
+  /**
+   * Bytes of points and triangles the last update uploaded to the GPU.
+   */
+  vtkGetMacro(UploadedBytes, vtkIdType);
 
   /**
    * Releases the OpenGL resources held in the window's context.
@@ -181,19 +248,25 @@ protected:
   double RayOffset = 0.001;
   bool ComputeVisibility = true;
   bool ComputeVisibilityBits = false;
+  bool VertexFiltering = false;
+  double FilteringThreshold = 0.05;
   vtkRenderWindow* RenderWindow = nullptr;
   int NumberOfDepthPasses = 0;
+  vtkIdType NumberOfComputedPoints = 0;
+  vtkIdType UploadedBytes = 0;
 
 private:
   vtkOcclusionQueryVisibility(const vtkOcclusionQueryVisibility&) = delete;
   void operator=(const vtkOcclusionQueryVisibility&) = delete;
 
-  // Visibility computed so far (one bit set of points per direction, in lightsphere order) and
-  // what it was computed for, so that a higher level adds only its new directions.
-  std::vector<std::vector<std::uint64_t>> Computed;
-  std::vector<vtkMTimeType> ComputedFor;
+  // The OpenGL window and the scene on it; false with an error when there is none.
+  bool PrepareOpenGL(bool needStorage, std::string& error);
+  // Moves the triangles the camera now sees from the unseen list to the seen points.
+  bool UpdateSeen(std::string& error);
+
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
   vtkRenderWindow* OwnWindow = nullptr;
-  std::unique_ptr<vtkVisibilityRenderer> Renderer;
 };
 
 #endif

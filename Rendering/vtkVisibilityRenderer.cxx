@@ -122,6 +122,29 @@ void main()
 }
 )";
 
+// The camera pass: candidates that survive the early depth test mark their bit.
+const char* const ViewVS = R"(#version 430 core
+in vec3 vertexMC;
+uniform mat4 viewMatrix;
+void main()
+{
+  gl_Position = viewMatrix * vec4(vertexMC, 1.0);
+}
+)";
+
+const char* const ViewFS = R"(#version 430 core
+layout(early_fragment_tests) in;
+layout(std430, binding = 0) buffer Seen { uint seen[]; };
+void main()
+{
+  uint bit = 1u << uint(gl_PrimitiveID % 32);
+  if ((seen[gl_PrimitiveID / 32] & bit) == 0u)
+  {
+    atomicOr(seen[gl_PrimitiveID / 32], bit);
+  }
+}
+)";
+
 // Column-major orthographic projection along -direction of the sphere of `radius` around the
 // origin: x and y across the direction, depth increasing away from the light.
 void LightMatrix(const std::array<double, 3>& l, double radius, float m[16])
@@ -232,12 +255,31 @@ bool vtkVisibilityRenderer::SetScene(vtkOpenGLRenderWindow* window,
     this->Points->SetType(vtkOpenGLBufferObject::ArrayBuffer);
     this->Triangles = vtkOpenGLBufferObject::New();
     this->Triangles->SetType(vtkOpenGLBufferObject::ElementArrayBuffer);
+    this->UploadedPoints.clear();
+    this->UploadedTriangles.clear();
   }
-  if (!this->Points->Upload(points, vtkOpenGLBufferObject::ArrayBuffer) ||
-    !this->Triangles->Upload(triangles, vtkOpenGLBufferObject::ElementArrayBuffer))
+  this->UploadedBytes = 0;
+  if (points != this->UploadedPoints || points.empty())
   {
-    error = "the scene could not be uploaded to the GPU (" + this->Points->GetError() + ")";
-    return false;
+    if (!this->Points->Upload(points, vtkOpenGLBufferObject::ArrayBuffer))
+    {
+      this->UploadedPoints.clear();
+      error = "the scene could not be uploaded to the GPU (" + this->Points->GetError() + ")";
+      return false;
+    }
+    this->UploadedPoints = points;
+    this->UploadedBytes += static_cast<vtkIdType>(points.size() * sizeof(float));
+  }
+  if (triangles != this->UploadedTriangles || triangles.empty())
+  {
+    if (!this->Triangles->Upload(triangles, vtkOpenGLBufferObject::ElementArrayBuffer))
+    {
+      this->UploadedTriangles.clear();
+      error = "the scene could not be uploaded to the GPU (" + this->Triangles->GetError() + ")";
+      return false;
+    }
+    this->UploadedTriangles = triangles;
+    this->UploadedBytes += static_cast<vtkIdType>(triangles.size() * sizeof(std::uint32_t));
   }
 
   vtkOpenGLShaderCache* cache = window->GetShaderCache();
@@ -329,8 +371,57 @@ void vtkVisibilityRenderer::RenderDepth(const std::array<double, 3>& direction, 
 }
 
 //------------------------------------------------------------------------------
+void vtkVisibilityRenderer::QueryEach(
+  size_t count, const std::function<void(size_t)>& draw, const std::function<void(size_t)>& passed)
+{
+  if (this->Queries.empty())
+  {
+    this->Queries.resize(2 * QueryBatch);
+    glGenQueries(static_cast<GLsizei>(this->Queries.size()), this->Queries.data());
+  }
+  // Batches of queries: issue one, then read the one before, so that the GPU is not waited for
+  // query by query.
+  auto read = [&](size_t first, size_t number, const unsigned int* ids)
+  {
+    for (size_t i = 0; i < number; ++i)
+    {
+      GLuint samples = 0;
+      glGetQueryObjectuiv(ids[i], GL_QUERY_RESULT, &samples);
+      if (samples)
+      {
+        passed(first + i);
+      }
+    }
+  };
+  size_t pendingFirst = 0, pendingCount = 0;
+  const unsigned int* pendingIds = nullptr;
+  for (size_t first = 0, batch = 0; first < count; first += QueryBatch, ++batch)
+  {
+    const size_t number = std::min<size_t>(QueryBatch, count - first);
+    const unsigned int* ids = this->Queries.data() + (batch % 2) * QueryBatch;
+    for (size_t i = 0; i < number; ++i)
+    {
+      glBeginQuery(GL_ANY_SAMPLES_PASSED, ids[i]);
+      draw(first + i);
+      glEndQuery(GL_ANY_SAMPLES_PASSED);
+    }
+    if (pendingIds)
+    {
+      read(pendingFirst, pendingCount, pendingIds);
+    }
+    pendingFirst = first;
+    pendingCount = number;
+    pendingIds = ids;
+  }
+  if (pendingIds)
+  {
+    read(pendingFirst, pendingCount, pendingIds);
+  }
+}
+
+//------------------------------------------------------------------------------
 bool vtkVisibilityRenderer::OcclusionQuery(const std::vector<std::array<double, 3>>& directions,
-  std::vector<Bits>& visible, std::string& error)
+  std::vector<Bits>& visible, std::string& error, const std::vector<std::uint32_t>* subset)
 {
   if (!this->Window || !this->DepthProgram)
   {
@@ -339,12 +430,9 @@ bool vtkVisibilityRenderer::OcclusionQuery(const std::vector<std::array<double, 
   }
   this->Window->MakeCurrent();
   vtkOpenGLState* state = this->Window->GetState();
-  if (this->Queries.empty())
-  {
-    this->Queries.resize(2 * QueryBatch);
-    glGenQueries(static_cast<GLsizei>(this->Queries.size()), this->Queries.data());
-  }
   const vtkIdType n = this->NumberOfReceivers;
+  const size_t count = subset ? subset->size() : static_cast<size_t>(n);
+  auto receiver = [&](size_t i) { return subset ? static_cast<vtkIdType>((*subset)[i]) : i; };
   state->PushFramebufferBindings();
   {
     PassState pass(state);
@@ -358,44 +446,13 @@ bool vtkVisibilityRenderer::OcclusionQuery(const std::vector<std::array<double, 
       state->vtkglDepthMask(GL_FALSE);
       Bits bits((n + 63) / 64, 0);
       this->DepthVAO->Bind();
-      // Batches of queries: issue one, then read the one before, so that the GPU is not waited
-      // for query by query.
-      auto read = [&](vtkIdType first, vtkIdType count, const unsigned int* ids)
-      {
-        for (vtkIdType i = 0; i < count; ++i)
+      this->QueryEach(
+        count, [&](size_t i) { glDrawArrays(GL_POINTS, static_cast<GLint>(receiver(i)), 1); },
+        [&](size_t i)
         {
-          GLuint passed = 0;
-          glGetQueryObjectuiv(ids[i], GL_QUERY_RESULT, &passed);
-          if (passed)
-          {
-            bits[(first + i) / 64] |= std::uint64_t(1) << ((first + i) % 64);
-          }
-        }
-      };
-      vtkIdType pendingFirst = 0, pendingCount = 0;
-      const unsigned int* pendingIds = nullptr;
-      for (vtkIdType first = 0, batch = 0; first < n; first += QueryBatch, ++batch)
-      {
-        const vtkIdType count = std::min<vtkIdType>(QueryBatch, n - first);
-        const unsigned int* ids = this->Queries.data() + (batch % 2) * QueryBatch;
-        for (vtkIdType i = 0; i < count; ++i)
-        {
-          glBeginQuery(GL_ANY_SAMPLES_PASSED, ids[i]);
-          glDrawArrays(GL_POINTS, static_cast<GLint>(first + i), 1);
-          glEndQuery(GL_ANY_SAMPLES_PASSED);
-        }
-        if (pendingIds)
-        {
-          read(pendingFirst, pendingCount, pendingIds);
-        }
-        pendingFirst = first;
-        pendingCount = count;
-        pendingIds = ids;
-      }
-      if (pendingIds)
-      {
-        read(pendingFirst, pendingCount, pendingIds);
-      }
+          const vtkIdType id = receiver(i);
+          bits[id / 64] |= std::uint64_t(1) << (id % 64);
+        });
       this->DepthVAO->Release();
       visible.push_back(std::move(bits));
     }
@@ -406,7 +463,8 @@ bool vtkVisibilityRenderer::OcclusionQuery(const std::vector<std::array<double, 
 
 //------------------------------------------------------------------------------
 bool vtkVisibilityRenderer::DepthCompare(const std::vector<std::array<double, 3>>& directions,
-  std::vector<Bits>& visible, std::string& error, const std::function<bool(size_t)>& progress)
+  std::vector<Bits>& visible, std::string& error, const std::function<bool(size_t)>& progress,
+  const std::vector<std::uint32_t>* subset)
 {
   if (!this->Window || !this->DepthProgram)
   {
@@ -447,6 +505,21 @@ bool vtkVisibilityRenderer::DepthCompare(const std::vector<std::array<double, 3>
 
   const vtkIdType n = this->NumberOfReceivers;
   const int words = static_cast<int>((n + 31) / 32);
+  if (subset)
+  {
+    // The receivers to test, drawn by index: gl_VertexID is then the receiver's id.
+    if (!this->Subset)
+    {
+      this->Subset = vtkOpenGLBufferObject::New();
+      this->Subset->SetType(vtkOpenGLBufferObject::ElementArrayBuffer);
+    }
+    if (!subset->empty() &&
+      !this->Subset->Upload(*subset, vtkOpenGLBufferObject::ElementArrayBuffer))
+    {
+      error = "the receivers to test could not be uploaded (" + this->Subset->GetError() + ")";
+      return false;
+    }
+  }
   if (!this->Storage)
   {
     glGenBuffers(1, &this->Storage);
@@ -530,7 +603,15 @@ bool vtkVisibilityRenderer::DepthCompare(const std::vector<std::array<double, 3>
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->Storage);
         glEnable(GL_RASTERIZER_DISCARD);
         this->CompareVAO->Bind();
-        glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(n));
+        if (!subset)
+        {
+          glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(n));
+        }
+        else if (!subset->empty())
+        {
+          this->Subset->Bind();
+          glDrawElements(GL_POINTS, static_cast<GLsizei>(subset->size()), GL_UNSIGNED_INT, nullptr);
+        }
         this->CompareVAO->Release();
         glDisable(GL_RASTERIZER_DISCARD);
         this->Farthest->Deactivate();
@@ -572,6 +653,168 @@ bool vtkVisibilityRenderer::DepthCompare(const std::vector<std::array<double, 3>
     visible.push_back(std::move(bits));
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkVisibilityRenderer::ViewVisible(const float matrix[16], int width, int height,
+  const std::vector<std::uint32_t>& candidates, bool queries, std::vector<char>& seen,
+  std::string& error)
+{
+  if (!this->Window || !this->DepthProgram)
+  {
+    error = "no scene";
+    return false;
+  }
+  const size_t count = candidates.size() / 3;
+  seen.assign(count, 0);
+  if (count == 0)
+  {
+    return true;
+  }
+  this->Window->MakeCurrent();
+  if (!this->PrepareView(width, height, queries, error))
+  {
+    return false;
+  }
+  if (!this->Candidates)
+  {
+    this->Candidates = vtkOpenGLBufferObject::New();
+    this->Candidates->SetType(vtkOpenGLBufferObject::ElementArrayBuffer);
+  }
+  if (!this->Candidates->Upload(candidates, vtkOpenGLBufferObject::ElementArrayBuffer))
+  {
+    error = "the triangles to test could not be uploaded (" + this->Candidates->GetError() + ")";
+    return false;
+  }
+  vtkOpenGLState* state = this->Window->GetState();
+  vtkOpenGLShaderCache* cache = this->Window->GetShaderCache();
+  const GLsizei words = static_cast<GLsizei>((count + 31) / 32);
+  state->PushFramebufferBindings();
+  {
+    PassState pass(state);
+    this->ViewFramebuffer->Bind();
+    state->vtkglViewport(0, 0, width, height);
+    // The whole scene's depth, pushed back by the polygon offset so that a candidate is not
+    // hidden by itself.
+    cache->ReadyShaderProgram(this->DepthProgram);
+    this->DepthProgram->SetUniformMatrix4x4("lightMatrix", const_cast<float*>(matrix));
+    state->vtkglDepthMask(GL_TRUE);
+    state->vtkglClearDepth(1.0);
+    state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(this->OffsetFactor, this->OffsetUnits);
+    this->DepthVAO->Bind();
+    this->Triangles->Bind();
+    glDrawElements(
+      GL_TRIANGLES, static_cast<GLsizei>(3 * this->NumberOfTriangles), GL_UNSIGNED_INT, nullptr);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    state->vtkglDepthMask(GL_FALSE);
+    state->vtkglDepthFunc(GL_LEQUAL);
+    if (queries)
+    {
+      // The paper's pass: one query per triangle.
+      this->Candidates->Bind();
+      this->QueryEach(
+        count,
+        [](size_t i)
+        {
+          glDrawElements(GL_TRIANGLES, 3, GL_UNSIGNED_INT,
+            reinterpret_cast<const void*>(3 * i * sizeof(std::uint32_t)));
+        },
+        [&seen](size_t i) { seen[i] = 1; });
+      this->DepthVAO->Release();
+    }
+    else
+    {
+      this->DepthVAO->Release();
+      const std::vector<std::uint32_t> zeros(words, 0u);
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->ViewStorage);
+      glBufferData(
+        GL_SHADER_STORAGE_BUFFER, words * sizeof(std::uint32_t), zeros.data(), GL_DYNAMIC_READ);
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->ViewStorage);
+      cache->ReadyShaderProgram(this->ViewProgram);
+      this->ViewProgram->SetUniformMatrix4x4("viewMatrix", const_cast<float*>(matrix));
+      this->ViewVAO->Bind();
+      this->Candidates->Bind();
+      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(3 * count), GL_UNSIGNED_INT, nullptr);
+      this->ViewVAO->Release();
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+      std::vector<std::uint32_t> bits(words);
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->ViewStorage);
+      glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, words * sizeof(std::uint32_t), bits.data());
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+      for (size_t i = 0; i < count; ++i)
+      {
+        seen[i] = (bits[i / 32] >> (i % 32)) & 1u;
+      }
+    }
+  }
+  state->PopFramebufferBindings();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkVisibilityRenderer::PrepareView(int width, int height, bool queries, std::string& error)
+{
+  if (!queries && !this->ViewProgram)
+  {
+    this->ViewProgram = this->Window->GetShaderCache()->ReadyShaderProgram(ViewVS, ViewFS, "");
+    if (!this->ViewProgram)
+    {
+      error = "the camera-view shader did not compile";
+      return false;
+    }
+    this->ViewProgram->Register(nullptr);
+    this->ViewVAO = vtkOpenGLVertexArrayObject::New();
+    this->ViewVAO->Bind();
+    const bool bound = this->ViewVAO->AddAttributeArray(
+      this->ViewProgram, this->Points, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
+    this->ViewVAO->Release();
+    if (!bound)
+    {
+      error = "the scene's points could not be bound to the camera-view shader";
+      return false;
+    }
+    glGenBuffers(1, &this->ViewStorage);
+  }
+  if (this->ViewDepth && this->ViewDepth->GetWidth() == static_cast<unsigned int>(width) &&
+    this->ViewDepth->GetHeight() == static_cast<unsigned int>(height))
+  {
+    return true;
+  }
+  if (this->ViewDepth)
+  {
+    this->ViewDepth->ReleaseGraphicsResources(this->Window);
+    this->ViewDepth->Delete();
+  }
+  this->ViewDepth = vtkTextureObject::New();
+  this->ViewDepth->SetContext(this->Window);
+  if (!this->ViewDepth->AllocateDepth(width, height, vtkTextureObject::Float32))
+  {
+    error = "a " + std::to_string(width) + " x " + std::to_string(height) +
+      " depth texture could not be allocated";
+    return false;
+  }
+  if (!this->ViewFramebuffer)
+  {
+    this->ViewFramebuffer = vtkOpenGLFramebufferObject::New();
+    this->ViewFramebuffer->SetContext(this->Window);
+  }
+  vtkOpenGLState* state = this->Window->GetState();
+  state->PushFramebufferBindings();
+  this->ViewFramebuffer->Bind();
+  this->ViewFramebuffer->AddDepthAttachment(this->ViewDepth);
+  this->ViewFramebuffer->DeactivateDrawBuffers();
+  this->ViewFramebuffer->DeactivateReadBuffer();
+  const char* status = nullptr;
+  const bool complete = vtkOpenGLFramebufferObject::GetFrameBufferStatus(GL_FRAMEBUFFER, status);
+  state->PopFramebufferBindings();
+  if (!complete)
+  {
+    error =
+      std::string("the camera-view framebuffer is incomplete (") + (status ? status : "") + ")";
+  }
+  return complete;
 }
 
 //------------------------------------------------------------------------------
@@ -670,14 +913,17 @@ void vtkVisibilityRenderer::ReleaseGraphicsResources(vtkWindow* window)
   {
     glDeleteQueries(static_cast<GLsizei>(this->Queries.size()), this->Queries.data());
   }
-  if (live && this->Storage)
+  for (unsigned int* buffer : { &this->Storage, &this->ViewStorage })
   {
-    glDeleteBuffers(1, &this->Storage);
+    if (live && *buffer)
+    {
+      glDeleteBuffers(1, buffer);
+    }
+    *buffer = 0;
   }
   this->Queries.clear();
-  this->Storage = 0;
   for (vtkShaderProgram** program :
-    { &this->DepthProgram, &this->PairProgram, &this->CompareProgram })
+    { &this->DepthProgram, &this->PairProgram, &this->CompareProgram, &this->ViewProgram })
   {
     if (*program)
     {
@@ -685,7 +931,8 @@ void vtkVisibilityRenderer::ReleaseGraphicsResources(vtkWindow* window)
       *program = nullptr;
     }
   }
-  for (vtkOpenGLVertexArrayObject** vao : { &this->DepthVAO, &this->PairVAO, &this->CompareVAO })
+  for (vtkOpenGLVertexArrayObject** vao :
+    { &this->DepthVAO, &this->PairVAO, &this->CompareVAO, &this->ViewVAO })
   {
     if (*vao)
     {
@@ -694,7 +941,8 @@ void vtkVisibilityRenderer::ReleaseGraphicsResources(vtkWindow* window)
       *vao = nullptr;
     }
   }
-  for (vtkOpenGLBufferObject** buffer : { &this->Points, &this->Triangles })
+  for (vtkOpenGLBufferObject** buffer :
+    { &this->Points, &this->Triangles, &this->Subset, &this->Candidates })
   {
     if (*buffer)
     {
@@ -703,7 +951,8 @@ void vtkVisibilityRenderer::ReleaseGraphicsResources(vtkWindow* window)
       *buffer = nullptr;
     }
   }
-  for (vtkOpenGLFramebufferObject** framebuffer : { &this->Framebuffer, &this->PairFramebuffer })
+  for (vtkOpenGLFramebufferObject** framebuffer :
+    { &this->Framebuffer, &this->PairFramebuffer, &this->ViewFramebuffer })
   {
     if (*framebuffer)
     {
@@ -712,7 +961,8 @@ void vtkVisibilityRenderer::ReleaseGraphicsResources(vtkWindow* window)
       *framebuffer = nullptr;
     }
   }
-  for (vtkTextureObject** texture : { &this->Depth, &this->Nearest, &this->Farthest })
+  for (vtkTextureObject** texture :
+    { &this->Depth, &this->Nearest, &this->Farthest, &this->ViewDepth })
   {
     if (*texture)
     {
@@ -721,5 +971,7 @@ void vtkVisibilityRenderer::ReleaseGraphicsResources(vtkWindow* window)
       *texture = nullptr;
     }
   }
+  this->UploadedPoints.clear();
+  this->UploadedTriangles.clear();
   this->Window = nullptr;
 }

@@ -25,6 +25,15 @@
  *   pass's depth test against the texel it falls on, for both directions, and sets its bits in a
  *   shader storage buffer, which is read back once per batch of directions.
  *
+ * Both can test a subset of the receivers (vertex filtering). A third pass tells which of a list
+ * of triangles a camera sees (Sattler et al. 2004, §4.1): the scene's depth from the camera, with
+ * polygon offset, then the candidates drawn against it without writing depth, either each inside
+ * its own occlusion query (the paper) or all at once with a fragment shader that marks
+ * gl_PrimitiveID in a shader storage buffer after the early depth test.
+ *
+ * SetScene() uploads only what differs from the scene already on the GPU: a deforming mesh
+ * re-uploads its points, not its triangles.
+ *
  * GL state is changed through vtkOpenGLState and restored. The owner releases the resources
  * (ReleaseGraphicsResources()) while the window's context exists; the destructor does it too.
  */
@@ -71,6 +80,7 @@ public:
    * Uploads a scene: points (x, y, z each; local coordinates within `radius` of the origin)
    * and triangles (three point ids each). The first `receivers` points are the ones tested.
    * The depth texture is resolution x resolution, rendered with glPolygonOffset(factor, units).
+   * Points and triangles equal to those already uploaded are not uploaded again.
    */
   bool SetScene(vtkOpenGLRenderWindow* window, const std::vector<float>& points,
     const std::vector<std::uint32_t>& triangles, vtkIdType receivers, double radius, int resolution,
@@ -80,18 +90,37 @@ public:
    * Visibility of the receivers from each direction (unit vectors toward the light), one bit set
    * of receivers per direction, by occlusion queries or by depth comparison in a shader.
    * DepthCompare reports the directions done after each batch to `progress`, and stops (false,
-   * error "stopped") when it returns false.
+   * error "stopped") when it returns false. With `subset` (receiver ids), only those receivers
+   * are tested; the others' bits stay 0.
    */
   bool OcclusionQuery(const std::vector<std::array<double, 3>>& directions,
-    std::vector<Bits>& visible, std::string& error);
+    std::vector<Bits>& visible, std::string& error,
+    const std::vector<std::uint32_t>* subset = nullptr);
   bool DepthCompare(const std::vector<std::array<double, 3>>& directions,
     std::vector<Bits>& visible, std::string& error,
-    const std::function<bool(size_t done)>& progress = nullptr);
+    const std::function<bool(size_t done)>& progress = nullptr,
+    const std::vector<std::uint32_t>* subset = nullptr);
+
+  /**
+   * Which of the `candidates` (three point ids each) a camera sees: `matrix` (column-major)
+   * takes the scene's local coordinates to clip space, the view is width x height pixels, and
+   * the whole scene hides what is behind it. `seen` gets one flag per candidate. With `queries`
+   * each candidate is drawn in its own occlusion query (OpenGL 3.3), otherwise all are drawn
+   * at once into a shader storage buffer (OpenGL 4.3).
+   */
+  bool ViewVisible(const float matrix[16], int width, int height,
+    const std::vector<std::uint32_t>& candidates, bool queries, std::vector<char>& seen,
+    std::string& error);
 
   /**
    * Depth passes rendered since the scene was set.
    */
   int GetNumberOfDepthPasses() const { return this->DepthPasses; }
+
+  /**
+   * Bytes of points and triangles the last SetScene() uploaded.
+   */
+  vtkIdType GetUploadedBytes() const { return this->UploadedBytes; }
 
   void ReleaseGraphicsResources(vtkWindow* window);
 
@@ -100,10 +129,27 @@ private:
   void RenderDepth(const std::array<double, 3>& direction, float matrix[16]);
   // Shaders, textures and framebuffer of DepthCompare's paired depth pass.
   bool PreparePairs(std::string& error);
+  // Program, depth texture and framebuffer of the camera pass.
+  bool PrepareView(int width, int height, bool queries, std::string& error);
+  // Issues one occlusion query per item (draw(i) draws item i), a batch ahead of the reads,
+  // and calls passed(i) for those with samples passed.
+  void QueryEach(size_t count, const std::function<void(size_t)>& draw,
+    const std::function<void(size_t)>& passed);
 
   vtkOpenGLRenderWindow* Window = nullptr;
   vtkOpenGLBufferObject* Points = nullptr;
   vtkOpenGLBufferObject* Triangles = nullptr;
+  vtkOpenGLBufferObject* Subset = nullptr;
+  vtkOpenGLBufferObject* Candidates = nullptr;
+  vtkOpenGLVertexArrayObject* ViewVAO = nullptr;
+  vtkOpenGLFramebufferObject* ViewFramebuffer = nullptr;
+  vtkTextureObject* ViewDepth = nullptr;
+  vtkShaderProgram* ViewProgram = nullptr;
+  unsigned int ViewStorage = 0;
+  // What is on the GPU, to upload only what changes.
+  std::vector<float> UploadedPoints;
+  std::vector<std::uint32_t> UploadedTriangles;
+  vtkIdType UploadedBytes = 0;
   vtkOpenGLVertexArrayObject* DepthVAO = nullptr;
   vtkOpenGLVertexArrayObject* PairVAO = nullptr;
   vtkOpenGLVertexArrayObject* CompareVAO = nullptr;

@@ -1,0 +1,325 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    vtkDynamicVisibilityDriver.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkDynamicVisibilityDriver.h"
+
+#include "vtkEnvironmentVisibilityLighting.h"
+#include "vtkOcclusionQueryVisibility.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCamera.h"
+#include "vtkDemandDrivenPipeline.h"
+#include "vtkInteractorObserver.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkProp3D.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderWindowInteractor.h"
+#include "vtkRenderer.h"
+#include "vtkTimerLog.h"
+
+#include <algorithm>
+
+vtkStandardNewMacro(vtkDynamicVisibilityDriver);
+vtkCxxSetObjectMacro(vtkDynamicVisibilityDriver, Visibility, vtkOcclusionQueryVisibility);
+vtkCxxSetObjectMacro(vtkDynamicVisibilityDriver, Lighting, vtkEnvironmentVisibilityLighting);
+vtkCxxSetObjectMacro(vtkDynamicVisibilityDriver, Prop, vtkProp3D);
+
+//------------------------------------------------------------------------------
+vtkDynamicVisibilityDriver::vtkDynamicVisibilityDriver() = default;
+
+//------------------------------------------------------------------------------
+vtkDynamicVisibilityDriver::~vtkDynamicVisibilityDriver()
+{
+  this->Detach();
+  this->SetVisibility(nullptr);
+  this->SetLighting(nullptr);
+  this->SetProp(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkDynamicVisibilityDriver::Attach(
+  vtkRenderer* renderer, vtkRenderWindowInteractor* interactor)
+{
+  this->Detach();
+  if (!renderer || !renderer->GetRenderWindow())
+  {
+    vtkErrorMacro("Attach() needs a renderer that is in a render window.");
+    return;
+  }
+  vtkNew<vtkCallbackCommand> command;
+  command->SetCallback(&vtkDynamicVisibilityDriver::OnEvent);
+  command->SetClientData(this);
+  this->Renderer = renderer;
+  this->Renderer->Register(this);
+  this->WindowObserver = renderer->GetRenderWindow()->AddObserver(vtkCommand::StartEvent, command);
+  if (interactor)
+  {
+    this->Interactor = interactor;
+    this->Interactor->Register(this);
+    this->TimerObserver = interactor->AddObserver(vtkCommand::TimerEvent, command);
+    this->Style = interactor->GetInteractorStyle();
+    if (this->Style)
+    {
+      this->Style->Register(this);
+      this->StyleObservers[0] =
+        this->Style->AddObserver(vtkCommand::StartInteractionEvent, command);
+      this->StyleObservers[1] = this->Style->AddObserver(vtkCommand::EndInteractionEvent, command);
+    }
+  }
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkDynamicVisibilityDriver::Detach()
+{
+  if (this->Renderer)
+  {
+    if (this->Renderer->GetRenderWindow())
+    {
+      this->Renderer->GetRenderWindow()->RemoveObserver(this->WindowObserver);
+    }
+    this->Renderer->UnRegister(this);
+    this->Renderer = nullptr;
+  }
+  if (this->Style)
+  {
+    this->Style->RemoveObserver(this->StyleObservers[0]);
+    this->Style->RemoveObserver(this->StyleObservers[1]);
+    this->Style->UnRegister(this);
+    this->Style = nullptr;
+  }
+  if (this->Interactor)
+  {
+    if (this->TimerId >= 0)
+    {
+      this->Interactor->DestroyTimer(this->TimerId);
+    }
+    this->Interactor->RemoveObserver(this->TimerObserver);
+    this->Interactor->UnRegister(this);
+    this->Interactor = nullptr;
+  }
+  this->TimerId = -1;
+}
+
+//------------------------------------------------------------------------------
+void vtkDynamicVisibilityDriver::OnEvent(
+  vtkObject*, unsigned long event, void* clientData, void* callData)
+{
+  auto* self = static_cast<vtkDynamicVisibilityDriver*>(clientData);
+  switch (event)
+  {
+    case vtkCommand::StartEvent:
+      self->Update();
+      break;
+    case vtkCommand::StartInteractionEvent:
+      self->StartInteraction();
+      break;
+    case vtkCommand::EndInteractionEvent:
+      self->EndInteraction();
+      break;
+    case vtkCommand::TimerEvent:
+      // Only our own timer: the refining frame.
+      if (callData && *static_cast<int*>(callData) == self->TimerId)
+      {
+        self->TimerId = -1;
+        if (self->Renderer && self->Renderer->GetRenderWindow() && self->NeedsRefinement())
+        {
+          self->Renderer->GetRenderWindow()->Render();
+        }
+      }
+      break;
+    default:
+      break;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkDynamicVisibilityDriver::StartInteraction()
+{
+  this->Interacting = true;
+}
+
+//------------------------------------------------------------------------------
+void vtkDynamicVisibilityDriver::EndInteraction()
+{
+  this->Interacting = false;
+  this->ScheduleRefinement();
+}
+
+//------------------------------------------------------------------------------
+bool vtkDynamicVisibilityDriver::NeedsRefinement() const
+{
+  return this->Visibility && this->Level < this->MaximumLevel;
+}
+
+//------------------------------------------------------------------------------
+void vtkDynamicVisibilityDriver::ScheduleRefinement()
+{
+  if (this->Interactor && this->TimerId < 0 && !this->Interacting && this->NeedsRefinement())
+  {
+    this->TimerId = this->Interactor->CreateOneShotTimer(this->IdleDelay);
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkDynamicVisibilityDriver::UpstreamMTime()
+{
+  vtkMTimeType latest = 0;
+  for (int port = 0; port < this->Visibility->GetNumberOfInputPorts(); ++port)
+  {
+    for (int c = 0; c < this->Visibility->GetNumberOfInputConnections(port); ++c)
+    {
+      vtkAlgorithm* producer = this->Visibility->GetInputAlgorithm(port, c);
+      auto* executive =
+        producer ? vtkDemandDrivenPipeline::SafeDownCast(producer->GetExecutive()) : nullptr;
+      if (executive)
+      {
+        executive->UpdatePipelineMTime();
+        latest = std::max(latest, executive->GetPipelineMTime());
+      }
+    }
+  }
+  return latest;
+}
+
+//------------------------------------------------------------------------------
+std::vector<double> vtkDynamicVisibilityDriver::ViewSignature()
+{
+  std::vector<double> view;
+  if (this->Renderer)
+  {
+    vtkCamera* camera = this->Renderer->GetActiveCamera();
+    vtkMatrix4x4* matrix = camera->GetViewTransformMatrix();
+    view.insert(view.end(), &matrix->Element[0][0], &matrix->Element[0][0] + 16);
+    view.push_back(camera->GetViewAngle());
+    view.push_back(camera->GetParallelScale());
+    view.push_back(camera->GetParallelProjection());
+    view.push_back(this->Renderer->GetSize()[0]);
+    view.push_back(this->Renderer->GetSize()[1]);
+  }
+  if (this->Prop)
+  {
+    vtkMatrix4x4* matrix = this->Prop->GetMatrix();
+    view.insert(view.end(), &matrix->Element[0][0], &matrix->Element[0][0] + 16);
+  }
+  return view;
+}
+
+//------------------------------------------------------------------------------
+void vtkDynamicVisibilityDriver::Update()
+{
+  if (!this->Visibility)
+  {
+    vtkErrorMacro("No visibility filter: SetVisibility() first.");
+    return;
+  }
+  const double start = vtkTimerLog::GetUniversalTime();
+  const int lowest = std::min(this->MinimumLevel, this->MaximumLevel);
+  const int highest = std::max(this->MinimumLevel, this->MaximumLevel);
+  const vtkMTimeType upstream = this->UpstreamMTime();
+  const std::vector<double> view = this->ViewSignature();
+  const bool geometryChanged = upstream != this->LastUpstream;
+  const bool viewChanged = view != this->LastView;
+  this->LastUpstream = upstream;
+  this->LastView = view;
+  this->Moving = this->Interacting || geometryChanged || viewChanged;
+
+  // The adaptive lightsphere: the moving level follows the update times, idle frames refine.
+  if (this->MovingLevel < 0)
+  {
+    this->MovingLevel = highest;
+  }
+  this->MovingLevel = std::min(std::max(this->MovingLevel, lowest), highest);
+  if (this->TargetUpdateTime <= 0.0)
+  {
+    this->MovingLevel = lowest;
+  }
+  if (this->Moving || this->Level < 0)
+  {
+    this->Level = this->MovingLevel;
+  }
+  else
+  {
+    this->Level = std::min(std::max(this->Level + 1, lowest), highest);
+  }
+  this->Visibility->SetLevel(this->Level);
+
+  if (this->Renderer)
+  {
+    this->Visibility->SetViewRenderer(this->Renderer);
+  }
+  this->Visibility->SetViewProp(this->Prop);
+  if (viewChanged && this->Visibility->GetVertexFiltering() &&
+    this->Visibility->GetFilteringActive())
+  {
+    this->Visibility->Modified();
+  }
+  if (this->Lighting && this->Prop)
+  {
+    // The prop's rotation, without its scale.
+    double a[3][3], r[3][3];
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        a[i][j] = this->Prop->GetMatrix()->GetElement(i, j);
+      }
+    }
+    vtkMath::Orthogonalize3x3(a, r);
+    this->Lighting->SetObjectRotation(&r[0][0]);
+  }
+  if (this->Lighting)
+  {
+    this->Lighting->Update();
+  }
+  else
+  {
+    this->Visibility->Update();
+  }
+  this->LastUpdateTime = vtkTimerLog::GetUniversalTime() - start;
+
+  if (this->Moving && this->TargetUpdateTime > 0.0)
+  {
+    // The next level costs about four times as much (four times the directions).
+    if (this->LastUpdateTime > this->TargetUpdateTime && this->MovingLevel > lowest)
+    {
+      --this->MovingLevel;
+    }
+    else if (4.0 * this->LastUpdateTime < this->TargetUpdateTime && this->MovingLevel < highest)
+    {
+      ++this->MovingLevel;
+    }
+  }
+  if (!this->Moving)
+  {
+    this->ScheduleRefinement();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkDynamicVisibilityDriver::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Visibility: " << this->Visibility << "\n";
+  os << indent << "Lighting: " << this->Lighting << "\n";
+  os << indent << "Prop: " << this->Prop << "\n";
+  os << indent << "Renderer: " << this->Renderer << "\n";
+  os << indent << "Interactor: " << this->Interactor << "\n";
+  os << indent << "MinimumLevel: " << this->MinimumLevel << "\n";
+  os << indent << "MaximumLevel: " << this->MaximumLevel << "\n";
+  os << indent << "TargetUpdateTime: " << this->TargetUpdateTime << "\n";
+  os << indent << "IdleDelay: " << this->IdleDelay << "\n";
+  os << indent << "Interacting: " << (this->Interacting ? "Yes" : "No") << "\n";
+  os << indent << "Moving: " << (this->Moving ? "Yes" : "No") << "\n";
+  os << indent << "Level: " << this->Level << "\n";
+  os << indent << "LastUpdateTime: " << this->LastUpdateTime << "\n";
+}
