@@ -236,7 +236,8 @@ void vtkDynamicVisibilityDriver::Update()
   // The adaptive lightsphere: the moving level follows the update times, idle frames refine.
   if (this->MovingLevel < 0)
   {
-    this->MovingLevel = highest;
+    // Climbing from the coarsest level is cheap; falling from the finest is not.
+    this->MovingLevel = lowest;
   }
   this->MovingLevel = std::min(std::max(this->MovingLevel, lowest), highest);
   if (this->TargetUpdateTime <= 0.0)

@@ -24,7 +24,8 @@
  * - it watches the interactor style's StartInteractionEvent and EndInteractionEvent;
  * - the adaptive lightsphere (§4.2): while anything moves, the level is the highest that kept the
  *   update within TargetUpdateTime (one level down when a frame took longer, one up when it took
- *   under a quarter of it), between MinimumLevel and MaximumLevel; when idle, every frame raises
+ *   under a quarter of it), between MinimumLevel and MaximumLevel, starting from MinimumLevel;
+ *   when idle, every frame raises
  *   the level by one up to MaximumLevel, and the interactor (when attached) is asked for those
  *   frames with a one-shot timer. Raising a level renders only its new directions.
  *
