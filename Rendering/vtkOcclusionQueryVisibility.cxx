@@ -244,6 +244,7 @@ public:
   std::vector<std::uint32_t> Unseen;
   std::vector<unsigned char> Seen;
   bool Filtering = false;
+  std::unique_ptr<vtkApertureRayScene> RayScene;
   vtkWeakPointer<vtkRenderer> ViewRenderer;
   vtkWeakPointer<vtkProp3D> ViewProp;
   std::unique_ptr<vtkVisibilityRenderer> Renderer;
@@ -650,6 +651,7 @@ int vtkOcclusionQueryVisibility::RequestData(
     }
     const vtkIdType n = in.Receivers.GetNumberOfPoints();
     in.SceneBuilt = false;
+    in.RayScene.reset();
     in.Computed.clear();
     in.Directions.assign(n, 0);
     // Without filtering every point is needed; with it, those of triangles not seen yet are not.
@@ -725,12 +727,18 @@ int vtkOcclusionQueryVisibility::RequestData(
   bool aborted = false;
   if (!todo.empty() && this->Backend == RAY_CAST)
   {
-    vtkApertureRayScene scene;
-    if (!scene.Build(receivers, in.Occluders))
+    // The Embree scene lasts as long as the geometry: filtering's later updates reuse it.
+    if (!in.RayScene)
     {
-      vtkErrorMacro("Embree failed: " << scene.GetError());
-      return 0;
+      in.RayScene.reset(new vtkApertureRayScene);
+      if (!in.RayScene->Build(receivers, in.Occluders))
+      {
+        vtkErrorMacro("Embree failed: " << in.RayScene->GetError());
+        in.RayScene.reset();
+        return 0;
+      }
     }
+    vtkApertureRayScene& scene = *in.RayScene;
     const auto m = static_cast<vtkIdType>(todo.size());
     const vtkIdType blocks = (m + 63) / 64;
     // Points in Morton order, so that each packet's rays start close together.
@@ -782,6 +790,7 @@ int vtkOcclusionQueryVisibility::RequestData(
     if (!embreeError.empty())
     {
       vtkErrorMacro("Embree failed while tracing: " << embreeError);
+      in.Key.clear();
       return 0;
     }
   }
