@@ -39,7 +39,7 @@ test: build
 	  ctest --output-on-failure --parallel $(JOBS)
 
 # The pictures in README.md and docs/: every shading mode on the Fuji terrain and on the bunny, the
-# aperture radius as colours, and HDR environments.
+# aperture radius as colours, HDR environments and dynamic scenes.
 pictures: build
 	@mkdir -p docs/images $(BUILD_DIR)/demo
 	@$(RENDER) -o docs/images/fuji.png --size 1280x800 \
@@ -55,6 +55,10 @@ pictures: build
 	  docs/images/bunny-environment.png
 	@$(RENDER) -o docs/images/fuji-sunrise.png --env Testing/Data/env/sunrise.exr --size 800x500 \
 	  --cache $(BUILD_DIR)/demo/fuji-apertures.vti
+	@$(XVFB) $(BUILD_DIR)/bin/DynamicScenes deform Testing/Data/env/forest.exr \
+	  docs/images/dynamic-deform.png > /dev/null
+	@$(XVFB) $(BUILD_DIR)/bin/DynamicScenes orbit Testing/Data/stanford-bunny.obj \
+	  Testing/Data/env/forest.exr docs/images/dynamic-orbit.png > /dev/null
 
 # The accuracy evaluation (docs/evaluation-tables.md, docs/images/evaluation-montage.png) and the
 # performance report (docs/performance.md and its plots); REPORT_MAX_LEVEL limits Table 1.

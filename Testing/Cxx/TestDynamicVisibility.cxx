@@ -42,6 +42,7 @@
 #include "vtkRenderer.h"
 #include "vtkSimpleElevationFilter.h"
 #include "vtkSphereSource.h"
+#include "vtkTestErrorObserver.h"
 #include "vtkTestUtilities.h"
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
@@ -331,5 +332,17 @@ int TestDynamicVisibility(int argc, char* argv[])
     "the prop's rotation reaches the lighting");
   Check(driver->GetMoving(), "a turned prop is a moving frame");
   driver->Detach();
+
+  // Misuse is an error, not a crash.
+  vtkNew<vtkDynamicVisibilityDriver> idle;
+  vtkNew<vtkTest::ErrorObserver> errors;
+  idle->AddObserver(vtkCommand::ErrorEvent, errors);
+  idle->Update();
+  Check(errors->GetError() && errors->GetErrorMessage().find("SetVisibility") != std::string::npos,
+    "a driver without a visibility filter says so");
+  errors->Clear();
+  idle->Attach(nullptr);
+  Check(errors->GetError() && errors->GetErrorMessage().find("renderer") != std::string::npos,
+    "attaching to no renderer says so");
   return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

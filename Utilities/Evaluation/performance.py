@@ -6,7 +6,8 @@
 Runs BenchmarkAperturePrecompute (filter against bare Embree), BenchmarkOcclusionQueryVisibility
 (the paper's Table 1 per backend, up to --max-level: level 4 with the OcclusionQuery backend takes
 minutes on llvmpipe), BenchmarkApertureLightingMapper (frame-time ratios) and
-BenchmarkEnvironmentLighting (relighting), each printing its own side-by-side ratios, then three
+BenchmarkEnvironmentLighting (relighting) and BenchmarkDynamicVisibility (Table 1's dynamic rows
+and the filtered orbit), each printing its own side-by-side ratios, then three
 sweeps measured here: precompute time against vertices (Fuji grids), visibility time against k
 (bunny, RayCast and DepthCompare) and aperture error against rays (bunny, stratified and random
 against 4096 rays). Writes performance.md and images/performance-*.png under --out. Needs an X
@@ -178,7 +179,8 @@ def main():
     for name, extra in (("BenchmarkAperturePrecompute", []),
                         ("BenchmarkOcclusionQueryVisibility", ["--max-level", args.max_level]),
                         ("BenchmarkApertureLightingMapper", []),
-                        ("BenchmarkEnvironmentLighting", [])):
+                        ("BenchmarkEnvironmentLighting", []),
+                        ("BenchmarkDynamicVisibility", ["--max-level", args.max_level])):
         print("running", name, *extra, flush=True)
         text, seconds = run_benchmark(os.path.join(args.bin, name), args.data, *extra)
         sections.append(f"## {name}\n\n`{name} Testing/Data {' '.join(extra)}` "
