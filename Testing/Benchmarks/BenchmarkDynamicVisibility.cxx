@@ -218,11 +218,12 @@ int main(int argc, char* argv[])
 
   const int backends[] = { vtkOcclusionQueryVisibility::OCCLUSION_QUERY,
     vtkOcclusionQueryVisibility::DEPTH_COMPARE, vtkOcclusionQueryVisibility::RAY_CAST };
-  std::printf("Table 1, dynamic rows: visibility recomputed every frame of an animation\n");
-  std::printf("(this machine: llvmpipe, 640 x 480; paper: Radeon 9800 XT, 1280 x 960)\n\n");
-  std::printf("%-9s %6s %-14s %4s %9s %9s %6s %7s %7s | %8s %8s %6s %6s\n", "mesh", "verts",
-    "backend", "k", "time1 ms", "time2 ms", "1/2", "FPS1", "FPS2", "paper t1", "paper t2", "FPS1",
-    "FPS2");
+  std::printf("## vtkOcclusionQueryVisibility: Table 1's dynamic rows\n\n");
+  std::printf("Visibility recomputed every frame of an animation; this machine: llvmpipe, "
+              "640 x 480; the paper: Radeon 9800 XT, 1280 x 960.\n\n");
+  std::printf("| mesh | vertices | backend | k | time1 ms | time2 ms | time1/time2 | FPS1 | FPS2 "
+              "| paper time1 | paper time2 | paper FPS1 | paper FPS2 |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (int m = 0; m < 2; ++m)
   {
     const PaperRow* paper = m == 0 ? Skeleton : Trousers;
@@ -252,8 +253,8 @@ int main(int argc, char* argv[])
           }
         }
         const double t1 = full.UpdateMs / frames, t2 = filtered.UpdateMs / frames;
-        std::printf(
-          "%-9s %6lld %-14s %4d %9.1f %9.1f %6.2f %7.2f %7.2f | %8.0f %8.0f %6.2f %6.2f\n",
+        std::printf("| %s | %lld | %s | %d | %.1f | %.1f | %.2f | %.2f | %.2f | %.0f | %.0f | %.2f "
+                    "| %.2f |\n",
           m == 0 ? "skeleton" : "trousers", static_cast<long long>(mesh->GetNumberOfPoints()),
           full.Visibility->GetBackendAsString(), paper[level].K, t1, t2, t1 / t2,
           1000.0 * frames / full.FrameMs, 1000.0 * frames / filtered.FrameMs, paper[level].Time1,
@@ -265,10 +266,13 @@ int main(int argc, char* argv[])
 
   // The orbit of the static bunny.
   const int views = quick ? 4 : 36;
-  std::printf("\nStatic bunny (%lld points), %d views of a 360 degree orbit, filtered vs full\n",
+  std::printf("\n## Filtering on a 360 degree orbit of the static bunny\n\n");
+  std::printf("%lld points, %d views; with filtering the points computed over the whole orbit, "
+              "without it all of them in the first view.\n\n",
     static_cast<long long>(bunny->GetNumberOfPoints()), views);
-  std::printf("%-14s %4s %12s %9s %12s %12s %7s %12s %12s %7s\n", "backend", "k", "points",
-    "computed", "first full", "first filt", "ratio", "orbit full", "orbit filt", "ratio");
+  std::printf("| backend | k | points computed | first view, full | first view, filtered | "
+              "ratio | orbit, full | orbit, filtered | ratio |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|\n");
   for (int backend : backends)
   {
     // The paper's backend at k = 6 (its bunny row: 445 ms full, 339 ms filtered), the others at 66.
@@ -309,13 +313,12 @@ int main(int argc, char* argv[])
       }
     }
     const long n = static_cast<long>(bunny->GetNumberOfPoints());
-    std::printf("%-14s %4d %12ld %8.1f%% %10.0f ms %10.0f ms %7.2f %10.0f ms %10.0f ms %7.2f\n",
-      full.Visibility->GetBackendAsString(), level == 0 ? 6 : (level == 1 ? 18 : 66), n,
-      100.0 * filtered.ComputedPoints / n, first[0], first[1], first[0] / first[1], full.UpdateMs,
-      filtered.UpdateMs, full.UpdateMs / filtered.UpdateMs);
+    std::printf(
+      "| %s | %d | %.1f%% of %ld | %.0f ms | %.0f ms | %.2f | %.0f ms | %.0f ms | %.2f |\n",
+      full.Visibility->GetBackendAsString(), level == 0 ? 6 : (level == 1 ? 18 : 66),
+      100.0 * filtered.ComputedPoints / n, n, first[0], first[1], first[0] / first[1],
+      full.UpdateMs, filtered.UpdateMs, full.UpdateMs / filtered.UpdateMs);
     std::fflush(stdout);
   }
-  std::printf("\n(points computed: with filtering, over the whole orbit, as a share of the bunny's "
-              "points; full computes them all in the first view)\n");
   return 0;
 }

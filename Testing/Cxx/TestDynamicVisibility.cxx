@@ -165,6 +165,46 @@ int TestDynamicVisibility(int argc, char* argv[])
     Check(a && b && differ == 0, "the deformed mesh's visibility equals a new filter's");
   }
 
+  // Two objects moving relative to each other: a plate over the ball, moved; the ball's
+  // visibility follows it.
+  vtkNew<vtkSphereSource> plateSource;
+  plateSource->SetThetaResolution(16);
+  plateSource->SetPhiResolution(8);
+  vtkNew<vtkTransform> plateMotion;
+  plateMotion->Translate(0.0, 0.0, 1.5);
+  plateMotion->Scale(1.5, 1.5, 0.1);
+  vtkNew<vtkTransformPolyDataFilter> plate;
+  plate->SetInputConnection(plateSource->GetOutputPort());
+  plate->SetTransform(plateMotion);
+  visibility->AddOccluderConnection(plate->GetOutputPort());
+  visibility->Update();
+  auto topVisibility = [&]()
+  {
+    // The visible directions of the ball's top point, summed.
+    vtkPolyData* out = visibility->GetOutput();
+    vtkDataArray* values = out->GetPointData()->GetArray("Visibility");
+    vtkIdType top = 0;
+    for (vtkIdType i = 1; i < out->GetNumberOfPoints(); ++i)
+    {
+      top = out->GetPoint(i)[2] > out->GetPoint(top)[2] ? i : top;
+    }
+    double sum = 0.0;
+    for (int j = 0; j < values->GetNumberOfComponents(); ++j)
+    {
+      sum += values->GetComponent(top, j);
+    }
+    return sum;
+  };
+  const double covered = topVisibility();
+  plateMotion->Translate(3.0, 0.0, 0.0);
+  visibility->Update();
+  const double uncovered = topVisibility();
+  std::cout << "the ball's top under the plate sees " << covered << ", with the plate moved away "
+            << uncovered << "\n";
+  Check(visibility->GetNumberOfComputedPoints() == n && uncovered > covered + 1.0,
+    "a moving occluder recomputes the receiver's visibility");
+  visibility->RemoveAllInputConnections(1);
+
   // Rigid rotation on the bunny (decimated to keep the test short).
   char* name = vtkTestUtilities::ExpandDataFileName(argc, argv, "Data/stanford-bunny.obj");
   vtkNew<vtkOBJReader> reader;
