@@ -21,6 +21,8 @@
  *   else 0, so that the irradiance from an environment of radiance L_j is Σ_j M_ij L_j w_j;
  * - `VisibilityBits` (optional, a vtkBitArray of k components): the raw visibility, 32 times
  *   smaller than `Visibility`;
+ * - `VisibilityComputed` (unsigned char, with vertex filtering only): 1 where the point has its
+ *   visibility, 0 where no triangle of it has been seen yet;
  * - field data `LightDirections` (k × 3) and `LightWeights` (k solid angles, summing to 4π).
  *
  * The output is the input with these arrays added (and `Normals` when the input had none,
