@@ -60,12 +60,22 @@ void vtkDynamicVisibilityDriver::Attach(
   command->SetClientData(this);
   this->Renderer = renderer;
   this->Renderer->Register(this);
-  this->WindowObserver = renderer->GetRenderWindow()->AddObserver(vtkCommand::StartEvent, command);
+  this->Window = renderer->GetRenderWindow();
+  this->WindowObserver = this->Window->AddObserver(vtkCommand::StartEvent, command);
   if (interactor)
   {
     this->Interactor = interactor;
     this->Interactor->Register(this);
     this->TimerObserver = interactor->AddObserver(vtkCommand::TimerEvent, command);
+    // Mouse buttons held down are interaction whatever the style (vtkInteractorStyleSwitch does
+    // not pass its styles' interaction events on); the style's events cover the rest.
+    for (unsigned long event :
+      { vtkCommand::LeftButtonPressEvent, vtkCommand::MiddleButtonPressEvent,
+        vtkCommand::RightButtonPressEvent, vtkCommand::LeftButtonReleaseEvent,
+        vtkCommand::MiddleButtonReleaseEvent, vtkCommand::RightButtonReleaseEvent })
+    {
+      this->ButtonObservers.push_back(interactor->AddObserver(event, command));
+    }
     this->Style = interactor->GetInteractorStyle();
     if (this->Style)
     {
@@ -81,12 +91,14 @@ void vtkDynamicVisibilityDriver::Attach(
 //------------------------------------------------------------------------------
 void vtkDynamicVisibilityDriver::Detach()
 {
+  // The window attached to, wherever the renderer has gone since.
+  if (this->Window)
+  {
+    this->Window->RemoveObserver(this->WindowObserver);
+    this->Window = nullptr;
+  }
   if (this->Renderer)
   {
-    if (this->Renderer->GetRenderWindow())
-    {
-      this->Renderer->GetRenderWindow()->RemoveObserver(this->WindowObserver);
-    }
     this->Renderer->UnRegister(this);
     this->Renderer = nullptr;
   }
@@ -104,10 +116,16 @@ void vtkDynamicVisibilityDriver::Detach()
       this->Interactor->DestroyTimer(this->TimerId);
     }
     this->Interactor->RemoveObserver(this->TimerObserver);
+    for (unsigned long tag : this->ButtonObservers)
+    {
+      this->Interactor->RemoveObserver(tag);
+    }
     this->Interactor->UnRegister(this);
     this->Interactor = nullptr;
   }
+  this->ButtonObservers.clear();
   this->TimerId = -1;
+  this->Interacting = false;
 }
 
 //------------------------------------------------------------------------------
@@ -121,9 +139,15 @@ void vtkDynamicVisibilityDriver::OnEvent(
       self->Update();
       break;
     case vtkCommand::StartInteractionEvent:
+    case vtkCommand::LeftButtonPressEvent:
+    case vtkCommand::MiddleButtonPressEvent:
+    case vtkCommand::RightButtonPressEvent:
       self->StartInteraction();
       break;
     case vtkCommand::EndInteractionEvent:
+    case vtkCommand::LeftButtonReleaseEvent:
+    case vtkCommand::MiddleButtonReleaseEvent:
+    case vtkCommand::RightButtonReleaseEvent:
       self->EndInteraction();
       break;
     case vtkCommand::TimerEvent:
@@ -131,9 +155,9 @@ void vtkDynamicVisibilityDriver::OnEvent(
       if (callData && *static_cast<int*>(callData) == self->TimerId)
       {
         self->TimerId = -1;
-        if (self->Renderer && self->Renderer->GetRenderWindow() && self->NeedsRefinement())
+        if (self->Window && self->NeedsRefinement())
         {
-          self->Renderer->GetRenderWindow()->Render();
+          self->Window->Render();
         }
       }
       break;
@@ -164,10 +188,16 @@ bool vtkDynamicVisibilityDriver::NeedsRefinement() const
 //------------------------------------------------------------------------------
 void vtkDynamicVisibilityDriver::ScheduleRefinement()
 {
-  if (this->Interactor && this->TimerId < 0 && !this->Interacting && this->NeedsRefinement())
+  if (!this->Interactor || this->Interacting || !this->NeedsRefinement())
   {
-    this->TimerId = this->Interactor->CreateOneShotTimer(this->IdleDelay);
+    return;
   }
+  // IdleDelay after the latest frame: an animation's frames keep pushing it back.
+  if (this->TimerId >= 0)
+  {
+    this->Interactor->DestroyTimer(this->TimerId);
+  }
+  this->TimerId = this->Interactor->CreateOneShotTimer(this->IdleDelay);
 }
 
 //------------------------------------------------------------------------------
@@ -244,11 +274,16 @@ void vtkDynamicVisibilityDriver::Update()
   {
     this->MovingLevel = lowest;
   }
-  if (this->Moving || this->Level < 0)
+  // Moving frames that have something to compute take the moving level; a camera turning
+  // round a mesh whose visibility is all there keeps its level (coarser would save nothing).
+  const bool filtering =
+    this->Visibility->GetVertexFiltering() && this->Visibility->GetFilteringActive();
+  const bool work = geometryChanged || (filtering && (viewChanged || this->Interacting));
+  if (this->Level < 0 || (this->Moving && work))
   {
     this->Level = this->MovingLevel;
   }
-  else
+  else if (!this->Moving)
   {
     this->Level = std::min(std::max(this->Level + 1, lowest), highest);
   }
@@ -259,8 +294,7 @@ void vtkDynamicVisibilityDriver::Update()
     this->Visibility->SetViewRenderer(this->Renderer);
   }
   this->Visibility->SetViewProp(this->Prop);
-  if (viewChanged && this->Visibility->GetVertexFiltering() &&
-    this->Visibility->GetFilteringActive())
+  if (viewChanged && filtering)
   {
     this->Visibility->Modified();
   }
@@ -288,7 +322,9 @@ void vtkDynamicVisibilityDriver::Update()
   }
   this->LastUpdateTime = vtkTimerLog::GetUniversalTime() - start;
 
-  if (this->Moving && this->TargetUpdateTime > 0.0)
+  // Only frames that computed something tell what a level costs.
+  if (this->Moving && this->TargetUpdateTime > 0.0 &&
+    this->Visibility->GetNumberOfComputedPoints() > 0)
   {
     // The next level costs about four times as much (four times the directions).
     if (this->LastUpdateTime > this->TargetUpdateTime && this->MovingLevel > lowest)
@@ -300,10 +336,7 @@ void vtkDynamicVisibilityDriver::Update()
       ++this->MovingLevel;
     }
   }
-  if (!this->Moving)
-  {
-    this->ScheduleRefinement();
-  }
+  this->ScheduleRefinement();
 }
 
 //------------------------------------------------------------------------------

@@ -21,13 +21,16 @@
  * - it watches the camera and the prop's matrix: with vertex filtering on, a new view sends the
  *   filter looking for triangles that come into view; a prop turned rigidly only turns the
  *   lighting's directions (vtkEnvironmentVisibilityLighting::SetObjectRotation());
- * - it watches the interactor style's StartInteractionEvent and EndInteractionEvent;
- * - the adaptive lightsphere (§4.2): while anything moves, the level is the highest that kept the
- *   update within TargetUpdateTime (one level down when a frame took longer, one up when it took
- *   under a quarter of it), between MinimumLevel and MaximumLevel, starting from MinimumLevel;
- *   when idle, every frame raises
+ * - it watches the interactor style's StartInteractionEvent and EndInteractionEvent, and the
+ *   interactor's mouse buttons;
+ * - the adaptive lightsphere (§4.2): a moving frame with something to compute (new geometry, or
+ *   a new view while vertex filtering is active) takes the moving level: the highest that kept
+ *   such updates within TargetUpdateTime (one level down when one took longer, one up when it
+ *   took under a quarter of it), between MinimumLevel and MaximumLevel, starting from
+ *   MinimumLevel. A moving frame with nothing to compute keeps its level. Every idle frame raises
  *   the level by one up to MaximumLevel, and the interactor (when attached) is asked for those
- *   frames with a one-shot timer. Raising a level renders only its new directions.
+ *   frames with a one-shot timer IdleDelay after the latest frame. Raising a level renders only
+ *   its new directions.
  *
  * In a few lines:
  * @code
@@ -49,12 +52,14 @@
 
 #include "vtkApertureLightingModule.h" // For export macro
 #include "vtkObject.h"
+#include "vtkWeakPointer.h" // For vtkWeakPointer
 
 #include <vector> // For std::vector
 
 class vtkEnvironmentVisibilityLighting;
 class vtkOcclusionQueryVisibility;
 class vtkProp3D;
+class vtkRenderWindow;
 class vtkRenderWindowInteractor;
 class vtkRenderer;
 
@@ -185,7 +190,9 @@ private:
   int MovingLevel = -1;
   vtkMTimeType LastUpstream = 0;
   std::vector<double> LastView;
+  vtkWeakPointer<vtkRenderWindow> Window;
   unsigned long WindowObserver = 0;
+  std::vector<unsigned long> ButtonObservers;
   unsigned long StyleObservers[2] = { 0, 0 };
   unsigned long TimerObserver = 0;
   int TimerId = -1;

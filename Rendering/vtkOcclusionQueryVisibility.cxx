@@ -479,12 +479,17 @@ bool vtkOcclusionQueryVisibility::UpdateSeen(std::string& error)
     width = size && size[0] > 0 ? size[0] : 300;
     height = size && size[1] > 0 ? size[1] : 300;
   }
-  if (!this->PrepareOpenGL(this->Backend != OCCLUSION_QUERY, error))
+  // The paper's per-triangle queries with its backend, or where storage buffers are missing
+  // (OpenGL 3.3 suffices for them); one draw into a storage buffer otherwise.
+  if (!this->PrepareOpenGL(false, error))
   {
     return false;
   }
+  const bool queries =
+    this->Backend == OCCLUSION_QUERY || !vtkVisibilityRenderer::Missing(true).empty();
 
-  // Local coordinates to the world (the prop's matrix after the local origin), then to the eye.
+  // Local coordinates to the world (the prop's matrix after the local origin), then to the eye
+  // as the renderer sees it (the camera's model-view, with its model and user transforms).
   vtkNew<vtkMatrix4x4> local;
   for (int c = 0; c < 3; ++c)
   {
@@ -500,9 +505,10 @@ bool vtkOcclusionQueryVisibility::UpdateSeen(std::string& error)
     model->DeepCopy(local);
   }
   vtkNew<vtkMatrix4x4> eye;
-  vtkMatrix4x4::Multiply4x4(camera->GetViewTransformMatrix(), model, eye);
+  vtkMatrix4x4::Multiply4x4(camera->GetModelViewTransformMatrix(), model, eye);
   // Near and far planes around the scene's bounding sphere (the camera's clipping range may
-  // not have been reset for this view yet).
+  // not have been reset for this view yet), on a copy of the camera, whose projection then has
+  // everything else the renderer uses (view angle, window centre, shear, user matrix).
   double scale = 0.0;
   for (int c = 0; c < 3; ++c)
   {
@@ -513,38 +519,18 @@ bool vtkOcclusionQueryVisibility::UpdateSeen(std::string& error)
   }
   const double radius = in.Radius * scale;
   const double depth = -eye->GetElement(2, 3);
-  const double aspect = static_cast<double>(width) / height;
-  double far = depth + radius;
-  double near = depth - radius;
-  vtkNew<vtkMatrix4x4> projection;
-  projection->Zero();
-  if (camera->GetParallelProjection())
+  const double far = depth + radius;
+  if (far <= 0.0)
   {
-    const double s = camera->GetParallelScale();
-    projection->SetElement(0, 0, 1.0 / (s * aspect));
-    projection->SetElement(1, 1, 1.0 / s);
-    projection->SetElement(2, 2, -2.0 / (far - near));
-    projection->SetElement(2, 3, -(far + near) / (far - near));
-    projection->SetElement(3, 3, 1.0);
+    // The scene is behind the camera: nothing is seen.
+    return true;
   }
-  else
-  {
-    if (far <= 0.0)
-    {
-      // The scene is behind the camera: nothing is seen.
-      return true;
-    }
-    near = std::max(near, 1e-3 * far);
-    const double t = std::tan(vtkMath::RadiansFromDegrees(camera->GetViewAngle()) / 2.0);
-    const double fy = camera->GetUseHorizontalViewAngle() ? aspect / t : 1.0 / t;
-    projection->SetElement(0, 0, fy / aspect);
-    projection->SetElement(1, 1, fy);
-    projection->SetElement(2, 2, (far + near) / (near - far));
-    projection->SetElement(2, 3, 2.0 * far * near / (near - far));
-    projection->SetElement(3, 2, -1.0);
-  }
+  vtkNew<vtkCamera> view;
+  view->DeepCopy(camera);
+  view->SetClippingRange(std::max(depth - radius, 1e-3 * far), far);
   vtkNew<vtkMatrix4x4> clip;
-  vtkMatrix4x4::Multiply4x4(projection, eye, clip);
+  vtkMatrix4x4::Multiply4x4(
+    view->GetProjectionTransformMatrix(static_cast<double>(width) / height, -1.0, 1.0), eye, clip);
   float matrix[16];
   for (int row = 0; row < 4; ++row)
   {
@@ -559,11 +545,10 @@ bool vtkOcclusionQueryVisibility::UpdateSeen(std::string& error)
   candidates.reserve(3 * in.Unseen.size());
   for (std::uint32_t t : in.Unseen)
   {
-    candidates.insert(candidates.end(), &triangles[3 * t], &triangles[3 * t + 3]);
+    candidates.insert(candidates.end(), &triangles[3 * size_t(t)], &triangles[3 * size_t(t) + 3]);
   }
   std::vector<char> seen;
-  if (!in.Renderer->ViewVisible(
-        matrix, width, height, candidates, this->Backend == OCCLUSION_QUERY, seen, error))
+  if (!in.Renderer->ViewVisible(matrix, width, height, candidates, queries, seen, error))
   {
     error = "OpenGL failed in the camera pass: " + error + ".";
     return false;
@@ -585,7 +570,7 @@ bool vtkOcclusionQueryVisibility::UpdateSeen(std::string& error)
     {
       for (int c = 0; c < 3; ++c)
       {
-        in.Seen[triangles[3 * in.Unseen[i] + c]] = 1;
+        in.Seen[triangles[3 * size_t(in.Unseen[i]) + c]] = 1;
       }
     }
   }

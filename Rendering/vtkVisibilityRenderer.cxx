@@ -10,6 +10,7 @@
 =========================================================================*/
 #include "vtkVisibilityRenderer.h"
 
+#include "vtkNew.h"
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -758,23 +759,28 @@ bool vtkVisibilityRenderer::PrepareView(int width, int height, bool queries, std
 {
   if (!queries && !this->ViewProgram)
   {
-    this->ViewProgram = this->Window->GetShaderCache()->ReadyShaderProgram(ViewVS, ViewFS, "");
-    if (!this->ViewProgram)
+    vtkShaderProgram* program =
+      this->Window->GetShaderCache()->ReadyShaderProgram(ViewVS, ViewFS, "");
+    if (!program)
     {
       error = "the camera-view shader did not compile";
       return false;
     }
-    this->ViewProgram->Register(nullptr);
-    this->ViewVAO = vtkOpenGLVertexArrayObject::New();
-    this->ViewVAO->Bind();
-    const bool bound = this->ViewVAO->AddAttributeArray(
-      this->ViewProgram, this->Points, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
-    this->ViewVAO->Release();
+    vtkNew<vtkOpenGLVertexArrayObject> vao;
+    vao->Bind();
+    const bool bound = vao->AddAttributeArray(
+      program, this->Points, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
+    vao->Release();
     if (!bound)
     {
       error = "the scene's points could not be bound to the camera-view shader";
       return false;
     }
+    // Kept only once complete, so that a failure is met again, not skipped, next time.
+    this->ViewProgram = program;
+    this->ViewProgram->Register(nullptr);
+    this->ViewVAO = vao;
+    this->ViewVAO->Register(nullptr);
     glGenBuffers(1, &this->ViewStorage);
   }
   if (this->ViewDepth && this->ViewDepth->GetWidth() == static_cast<unsigned int>(width) &&
@@ -793,6 +799,8 @@ bool vtkVisibilityRenderer::PrepareView(int width, int height, bool queries, std
   {
     error = "a " + std::to_string(width) + " x " + std::to_string(height) +
       " depth texture could not be allocated";
+    this->ViewDepth->Delete();
+    this->ViewDepth = nullptr;
     return false;
   }
   if (!this->ViewFramebuffer)
@@ -813,6 +821,10 @@ bool vtkVisibilityRenderer::PrepareView(int width, int height, bool queries, std
   {
     error =
       std::string("the camera-view framebuffer is incomplete (") + (status ? status : "") + ")";
+    // Allocated again next time, not taken as ready.
+    this->ViewDepth->ReleaseGraphicsResources(this->Window);
+    this->ViewDepth->Delete();
+    this->ViewDepth = nullptr;
   }
   return complete;
 }

@@ -311,19 +311,31 @@ int TestDynamicVisibility(int argc, char* argv[])
     "refinement stops at MaximumLevel");
   Check(!driver->NeedsRefinement(), "nothing left to refine");
 
+  // Interaction over a mesh whose visibility is all there computes nothing and keeps the level.
+  const vtkMTimeType before = dynamic->GetOutput()->GetMTime();
   driver->StartInteraction();
   window->Render();
-  Check(driver->GetMoving() && driver->GetLevel() == 0, "interaction takes the coarse level");
-  Check(dynamic->GetNumberOfDepthPasses() == 0, "the coarse level reuses the computed directions");
+  Check(
+    driver->GetMoving() && driver->GetLevel() == 2 && dynamic->GetOutput()->GetMTime() == before,
+    "interaction over computed visibility keeps the level and computes nothing");
   driver->EndInteraction();
-  window->Render();
-  Check(!driver->GetMoving() && driver->GetLevel() == 1 && dynamic->GetNumberOfDepthPasses() == 0,
-    "after interaction the level rises again without rendering");
+
+  // A lower level is a prefix of what is computed: nothing is rendered for it.
+  dynamic->SetLevel(0);
+  dynamic->Update();
+  Check(dynamic->GetNumberOfDepthPasses() == 0 && dynamic->GetNumberOfComputedPoints() == 0 &&
+      dynamic->GetOutput()->GetPointData()->GetArray("Visibility")->GetNumberOfComponents() == 6,
+    "a coarser level reuses the computed directions");
+  dynamic->SetLevel(2);
 
   warp->SetScaleFactor(0.3);
   window->Render();
   Check(driver->GetMoving() && driver->GetLevel() == 0 && dynamic->GetNumberOfComputedPoints() == n,
-    "a pipeline change is a moving frame and recomputes");
+    "a pipeline change is a moving frame and recomputes at the moving level");
+  window->Render();
+  Check(!driver->GetMoving() && driver->GetLevel() == 1 &&
+      dynamic->GetNumberOfDepthPasses() == (18 - 6) / 2,
+    "then idle frames refine it, rendering only the new directions");
 
   // Adaptive level: a generous budget climbs to the maximum, an impossible one falls to the
   // minimum.
