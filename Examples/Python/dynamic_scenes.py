@@ -19,6 +19,8 @@ import sys
 
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.util.vtkConstants import VTK_INT
 from vtkmodules.vtkCommonCore import vtkCommand
 from vtkmodules.vtkCommonDataModel import vtkDataObject, vtkImageData
 from vtkmodules.vtkFiltersCore import vtkArrayCalculator, vtkImageAppend
@@ -209,9 +211,10 @@ def main(argv):
     interactor.SetInteractorStyle(vtkInteractorStyleTrackballCamera())
     driver.Attach(renderer, interactor)
 
-    def on_timer(caller, event):
+    @calldata_type(VTK_INT)
+    def on_timer(caller, event, timer):
         # The driver's refining frames come by timer too; only ours step the animation.
-        if caller.GetTimerEventId() == state["timer"] and state["running"]:
+        if timer == state["timer"] and state["running"]:
             step()
             window.Render()
 
