@@ -788,7 +788,6 @@ int vtkOcclusionQueryVisibility::RequestData(
       return 0;
     }
     bool ok = true;
-    const int passesBefore = in.Renderer->GetNumberOfDepthPasses();
     if (this->Backend == DEPTH_COMPARE)
     {
       // All directions at once, so that each can be paired with its opposite.
@@ -817,7 +816,8 @@ int vtkOcclusionQueryVisibility::RequestData(
       this->UpdateProgress(static_cast<double>(begin + chunk.size()) / missing.size());
       ok = ok && !this->GetAbortExecute();
     }
-    this->NumberOfDepthPasses = in.Renderer->GetNumberOfDepthPasses() - passesBefore;
+    // SetScene() in this update started the count.
+    this->NumberOfDepthPasses = in.Renderer->GetNumberOfDepthPasses();
     aborted = this->GetAbortExecute() != 0;
     if (!ok && !aborted)
     {

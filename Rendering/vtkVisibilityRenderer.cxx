@@ -48,17 +48,20 @@ void main()
 }
 )";
 
+// Points placed by one matrix, for the passes that need GLSL 4.30 fragment shaders: DepthCompare's
+// paired depth pass and the camera pass.
+const char* const MatrixVS = R"(#version 430 core
+in vec3 vertexMC;
+uniform mat4 clipMatrix;
+void main()
+{
+  gl_Position = clipMatrix * vec4(vertexMC, 1.0);
+}
+)";
+
 // DepthCompare's depth pass, for a direction and its opposite at once: the nearest and the
 // farthest surface in each texel (blending with GL_MIN and GL_MAX), each pushed away from its
 // light by the offset glPolygonOffset(factor, units) gives a depth pass.
-const char* const PairVS = R"(#version 430 core
-in vec3 vertexMC;
-uniform mat4 lightMatrix;
-void main()
-{
-  gl_Position = lightMatrix * vec4(vertexMC, 1.0);
-}
-)";
 
 const char* const PairFS = R"(#version 430 core
 uniform float offsetFactor;
@@ -124,15 +127,6 @@ void main()
 )";
 
 // The camera pass: candidates that survive the early depth test mark their bit.
-const char* const ViewVS = R"(#version 430 core
-in vec3 vertexMC;
-uniform mat4 viewMatrix;
-void main()
-{
-  gl_Position = viewMatrix * vec4(vertexMC, 1.0);
-}
-)";
-
 const char* const ViewFS = R"(#version 430 core
 layout(early_fragment_tests) in;
 layout(std430, binding = 0) buffer Seen { uint seen[]; };
@@ -173,6 +167,66 @@ void LightMatrix(const std::array<double, 3>& l, double radius, float m[16])
       m[4 * column + row] = rows[row][column];
     }
   }
+}
+
+// Makes `texture` a width x height float depth texture, the only attachment of `framebuffer`
+// (both created when missing), unless it already is; false with `error` otherwise, leaving no
+// texture, so that the next call tries again.
+bool DepthTarget(vtkOpenGLRenderWindow* window, vtkTextureObject*& texture,
+  vtkOpenGLFramebufferObject*& framebuffer, int width, int height, const char* what,
+  std::string& error)
+{
+  if (texture && texture->GetWidth() == static_cast<unsigned int>(width) &&
+    texture->GetHeight() == static_cast<unsigned int>(height))
+  {
+    return true;
+  }
+  if (texture)
+  {
+    texture->ReleaseGraphicsResources(window);
+    texture->Delete();
+  }
+  texture = vtkTextureObject::New();
+  texture->SetContext(window);
+  texture->SetMinificationFilter(vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  bool ready = texture->AllocateDepth(width, height, vtkTextureObject::Float32);
+  if (!ready)
+  {
+    error = "a " + std::to_string(width) + " x " + std::to_string(height) + " " + what +
+      " depth texture could not be allocated";
+  }
+  else
+  {
+    if (!framebuffer)
+    {
+      framebuffer = vtkOpenGLFramebufferObject::New();
+      framebuffer->SetContext(window);
+    }
+    vtkOpenGLState* state = window->GetState();
+    state->PushFramebufferBindings();
+    framebuffer->Bind();
+    framebuffer->AddDepthAttachment(texture);
+    framebuffer->DeactivateDrawBuffers();
+    framebuffer->DeactivateReadBuffer();
+    const char* status = nullptr;
+    ready = vtkOpenGLFramebufferObject::GetFrameBufferStatus(GL_FRAMEBUFFER, status);
+    state->PopFramebufferBindings();
+    if (!ready)
+    {
+      error =
+        std::string("the ") + what + " framebuffer is incomplete (" + (status ? status : "") + ")";
+    }
+  }
+  if (!ready)
+  {
+    texture->ReleaseGraphicsResources(window);
+    texture->Delete();
+    texture = nullptr;
+  }
+  return ready;
 }
 
 // The depth pass's state, restored when the object goes.
@@ -310,45 +364,8 @@ bool vtkVisibilityRenderer::SetScene(vtkOpenGLRenderWindow* window,
     return false;
   }
 
-  if (!this->Depth || this->Depth->GetWidth() != static_cast<unsigned int>(resolution))
-  {
-    if (this->Depth)
-    {
-      this->Depth->ReleaseGraphicsResources(window);
-      this->Depth->Delete();
-    }
-    this->Depth = vtkTextureObject::New();
-    this->Depth->SetContext(window);
-    this->Depth->SetMinificationFilter(vtkTextureObject::Nearest);
-    this->Depth->SetMagnificationFilter(vtkTextureObject::Nearest);
-    this->Depth->SetWrapS(vtkTextureObject::ClampToEdge);
-    this->Depth->SetWrapT(vtkTextureObject::ClampToEdge);
-    if (!this->Depth->AllocateDepth(resolution, resolution, vtkTextureObject::Float32))
-    {
-      error = "a " + std::to_string(resolution) + "^2 depth texture could not be allocated";
-      return false;
-    }
-    if (!this->Framebuffer)
-    {
-      this->Framebuffer = vtkOpenGLFramebufferObject::New();
-      this->Framebuffer->SetContext(window);
-    }
-    vtkOpenGLState* state = window->GetState();
-    state->PushFramebufferBindings();
-    this->Framebuffer->Bind();
-    this->Framebuffer->AddDepthAttachment(this->Depth);
-    this->Framebuffer->DeactivateDrawBuffers();
-    this->Framebuffer->DeactivateReadBuffer();
-    const char* status = nullptr;
-    const bool complete = vtkOpenGLFramebufferObject::GetFrameBufferStatus(GL_FRAMEBUFFER, status);
-    state->PopFramebufferBindings();
-    if (!complete)
-    {
-      error = std::string("the depth framebuffer is incomplete (") + (status ? status : "") + ")";
-      return false;
-    }
-  }
-  return true;
+  return DepthTarget(
+    window, this->Depth, this->Framebuffer, resolution, resolution, "light-view", error);
 }
 
 //------------------------------------------------------------------------------
@@ -565,7 +582,7 @@ bool vtkVisibilityRenderer::DepthCompare(const std::vector<std::array<double, 3>
         this->PairFramebuffer->Bind();
         this->PairFramebuffer->ActivateDrawBuffers(2);
         cache->ReadyShaderProgram(this->PairProgram);
-        this->PairProgram->SetUniformMatrix4x4("lightMatrix", matrix);
+        this->PairProgram->SetUniformMatrix4x4("clipMatrix", matrix);
         this->PairProgram->SetUniformf("offsetFactor", this->OffsetFactor);
         this->PairProgram->SetUniformf("offsetUnits", this->OffsetUnits);
         state->vtkglDisable(GL_DEPTH_TEST);
@@ -734,7 +751,7 @@ bool vtkVisibilityRenderer::ViewVisible(const float matrix[16], int width, int h
         GL_SHADER_STORAGE_BUFFER, words * sizeof(std::uint32_t), zeros.data(), GL_DYNAMIC_READ);
       glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->ViewStorage);
       cache->ReadyShaderProgram(this->ViewProgram);
-      this->ViewProgram->SetUniformMatrix4x4("viewMatrix", const_cast<float*>(matrix));
+      this->ViewProgram->SetUniformMatrix4x4("clipMatrix", const_cast<float*>(matrix));
       this->ViewVAO->Bind();
       this->Candidates->Bind();
       glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(3 * count), GL_UNSIGNED_INT, nullptr);
@@ -759,107 +776,57 @@ bool vtkVisibilityRenderer::PrepareView(int width, int height, bool queries, std
 {
   if (!queries && !this->ViewProgram)
   {
-    vtkShaderProgram* program =
-      this->Window->GetShaderCache()->ReadyShaderProgram(ViewVS, ViewFS, "");
-    if (!program)
+    if (!this->ReadyProgram(
+          this->ViewProgram, this->ViewVAO, MatrixVS, ViewFS, "camera-view", error))
     {
-      error = "the camera-view shader did not compile";
       return false;
     }
-    vtkNew<vtkOpenGLVertexArrayObject> vao;
-    vao->Bind();
-    const bool bound = vao->AddAttributeArray(
-      program, this->Points, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
-    vao->Release();
-    if (!bound)
-    {
-      error = "the scene's points could not be bound to the camera-view shader";
-      return false;
-    }
-    // Kept only once complete, so that a failure is met again, not skipped, next time.
-    this->ViewProgram = program;
-    this->ViewProgram->Register(nullptr);
-    this->ViewVAO = vao;
-    this->ViewVAO->Register(nullptr);
     glGenBuffers(1, &this->ViewStorage);
   }
-  if (this->ViewDepth && this->ViewDepth->GetWidth() == static_cast<unsigned int>(width) &&
-    this->ViewDepth->GetHeight() == static_cast<unsigned int>(height))
+  return DepthTarget(
+    this->Window, this->ViewDepth, this->ViewFramebuffer, width, height, "camera-view", error);
+}
+
+//------------------------------------------------------------------------------
+bool vtkVisibilityRenderer::ReadyProgram(vtkShaderProgram*& program,
+  vtkOpenGLVertexArrayObject*& vao, const char* vs, const char* fs, const char* what,
+  std::string& error)
+{
+  if (program)
   {
     return true;
   }
-  if (this->ViewDepth)
+  vtkShaderProgram* compiled = this->Window->GetShaderCache()->ReadyShaderProgram(vs, fs, "");
+  if (!compiled)
   {
-    this->ViewDepth->ReleaseGraphicsResources(this->Window);
-    this->ViewDepth->Delete();
-  }
-  this->ViewDepth = vtkTextureObject::New();
-  this->ViewDepth->SetContext(this->Window);
-  if (!this->ViewDepth->AllocateDepth(width, height, vtkTextureObject::Float32))
-  {
-    error = "a " + std::to_string(width) + " x " + std::to_string(height) +
-      " depth texture could not be allocated";
-    this->ViewDepth->Delete();
-    this->ViewDepth = nullptr;
+    error = std::string("the ") + what + " shader did not compile";
     return false;
   }
-  if (!this->ViewFramebuffer)
+  vtkNew<vtkOpenGLVertexArrayObject> bound;
+  bound->Bind();
+  const bool ok = bound->AddAttributeArray(
+    compiled, this->Points, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
+  bound->Release();
+  if (!ok)
   {
-    this->ViewFramebuffer = vtkOpenGLFramebufferObject::New();
-    this->ViewFramebuffer->SetContext(this->Window);
+    error = std::string("the scene's points could not be bound to the ") + what + " shader";
+    return false;
   }
-  vtkOpenGLState* state = this->Window->GetState();
-  state->PushFramebufferBindings();
-  this->ViewFramebuffer->Bind();
-  this->ViewFramebuffer->AddDepthAttachment(this->ViewDepth);
-  this->ViewFramebuffer->DeactivateDrawBuffers();
-  this->ViewFramebuffer->DeactivateReadBuffer();
-  const char* status = nullptr;
-  const bool complete = vtkOpenGLFramebufferObject::GetFrameBufferStatus(GL_FRAMEBUFFER, status);
-  state->PopFramebufferBindings();
-  if (!complete)
-  {
-    error =
-      std::string("the camera-view framebuffer is incomplete (") + (status ? status : "") + ")";
-    // Allocated again next time, not taken as ready.
-    this->ViewDepth->ReleaseGraphicsResources(this->Window);
-    this->ViewDepth->Delete();
-    this->ViewDepth = nullptr;
-  }
-  return complete;
+  // Kept only once complete, so that a failure is met again, not skipped, next time.
+  program = compiled;
+  program->Register(nullptr);
+  vao = bound;
+  vao->Register(nullptr);
+  return true;
 }
 
 //------------------------------------------------------------------------------
 bool vtkVisibilityRenderer::PreparePairs(std::string& error)
 {
-  vtkOpenGLShaderCache* cache = this->Window->GetShaderCache();
-  auto ready = [&](vtkShaderProgram*& program, vtkOpenGLVertexArrayObject*& vao, const char* vs,
-                 const char* fs, const char* what)
-  {
-    if (program)
-    {
-      return true;
-    }
-    program = cache->ReadyShaderProgram(vs, fs, "");
-    if (!program)
-    {
-      error = std::string("the ") + what + " shader did not compile";
-      return false;
-    }
-    program->Register(nullptr);
-    vao = vtkOpenGLVertexArrayObject::New();
-    vao->Bind();
-    const bool bound = vao->AddAttributeArray(
-      program, this->Points, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
-    vao->Release();
-    if (!bound)
-    {
-      error = std::string("the scene's points could not be bound to the ") + what + " shader";
-    }
-    return bound;
-  };
-  if (!ready(this->PairProgram, this->PairVAO, PairVS, PairFS, "nearest-and-farthest") ||
-    !ready(this->CompareProgram, this->CompareVAO, CompareVS, CompareFS, "depth-compare"))
+  if (!this->ReadyProgram(
+        this->PairProgram, this->PairVAO, MatrixVS, PairFS, "nearest-and-farthest", error) ||
+    !this->ReadyProgram(
+      this->CompareProgram, this->CompareVAO, CompareVS, CompareFS, "depth-compare", error))
   {
     return false;
   }

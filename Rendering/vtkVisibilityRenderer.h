@@ -131,6 +131,10 @@ private:
   bool PreparePairs(std::string& error);
   // Program, depth texture and framebuffer of the camera pass.
   bool PrepareView(int width, int height, bool queries, std::string& error);
+  // Compiles a program whose vertex shader takes the scene's points as vertexMC, with its vertex
+  // array; unless `program` is set already.
+  bool ReadyProgram(vtkShaderProgram*& program, vtkOpenGLVertexArrayObject*& vao, const char* vs,
+    const char* fs, const char* what, std::string& error);
   // Issues one occlusion query per item (draw(i) draws item i), a batch ahead of the reads,
   // and calls passed(i) for those with samples passed.
   void QueryEach(size_t count, const std::function<void(size_t)>& draw,

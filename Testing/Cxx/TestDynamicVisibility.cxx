@@ -31,6 +31,7 @@
 #include "vtkImageData.h"
 #include "vtkInteractorStyleTrackballCamera.h"
 #include "vtkMath.h"
+#include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
 #include "vtkPointData.h"
@@ -106,6 +107,18 @@ double MeanDifference(vtkDataArray* a, vtkDataArray* b)
     total += std::abs(a->GetComponent(v / 3, v % 3));
   }
   return total > 0.0 ? difference / total : 1.0;
+}
+
+// The rotation part of a transform, row-major, as SetObjectRotation() takes it.
+void RotationOf(vtkTransform* transform, double rotation[9])
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      rotation[3 * i + j] = transform->GetMatrix()->GetElement(i, j);
+    }
+  }
 }
 
 vtkDataArray* LightingOf(vtkEnvironmentVisibilityLighting* lighting)
@@ -245,13 +258,7 @@ int TestDynamicVisibility(int argc, char* argv[])
   truth->SetBlurAngle(0.15);
   truth->Update();
   double rotation[9];
-  for (int i = 0; i < 3; ++i)
-  {
-    for (int j = 0; j < 3; ++j)
-    {
-      rotation[3 * i + j] = turn->GetMatrix()->GetElement(i, j);
-    }
-  }
+  RotationOf(turn, rotation);
   lit->SetObjectRotation(rotation);
   lit->Update();
   const double rotated = MeanDifference(LightingOf(truth), LightingOf(lit));
@@ -264,13 +271,7 @@ int TestDynamicVisibility(int argc, char* argv[])
   // A turn about the environment's up axis (z) is the opposite azimuth.
   vtkNew<vtkTransform> spin;
   spin->RotateZ(40.0);
-  for (int i = 0; i < 3; ++i)
-  {
-    for (int j = 0; j < 3; ++j)
-    {
-      rotation[3 * i + j] = spin->GetMatrix()->GetElement(i, j);
-    }
-  }
+  RotationOf(spin, rotation);
   lit->SetObjectRotation(rotation);
   lit->Update();
   vtkNew<vtkFloatArray> spun;
