@@ -502,7 +502,7 @@ double ShadeInputs(int shading, int lambert, const double n[3], const double ben
     un[0] = un[1] = un[2] = 0.0;
   }
   const Cap aperture(ub, std::min(rp, 0.5 * Pi));
-  const Cap light(ul, std::min(std::max(rl, vtkSphericalCap::MinimumLightRadius), 0.5 * Pi));
+  const Cap light(ul, vtkSphericalCap::ClampLightRadius(rl));
   return Shade(shading, lambert, un, aperture, light, coverage);
 }
 }
@@ -541,4 +541,10 @@ double vtkSphericalCap::SkyTransfer(
 void vtkSphericalCap::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+}
+
+//------------------------------------------------------------------------------
+double vtkSphericalCap::ClampLightRadius(double radius)
+{
+  return std::min(std::max(radius, MinimumLightRadius), 0.5 * Pi);
 }

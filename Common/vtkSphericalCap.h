@@ -144,6 +144,11 @@ public:
   static constexpr double MinimumLightRadius = 1e-4;
 
   /**
+   * A light radius as the shading functions use it: within [MinimumLightRadius, π/2].
+   */
+  static double ClampLightRadius(double radius);
+
+  /**
    * Irradiance at a point with normal n and aperture (bent, rp) from a light of angular radius
    * rl in direction l, for a light of intensity 1. The light's radiance is 1/(π sin²rl), so an
    * unoccluded light at normal incidence, fully above the horizon, gives 1, as a VTK light of

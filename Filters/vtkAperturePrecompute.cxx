@@ -10,9 +10,13 @@
 =========================================================================*/
 #include "vtkAperturePrecompute.h"
 
-#include "vtkApertureHemisphereSampler.h"
+#include "vtkApertureCellCheck.h"
+#include "vtkApertureRayPacket.h"
+#include "vtkApertureRaySampler.h"
 #include "vtkApertureRayScene.h"
+#include "vtkApertureRefinement.h"
 #include "vtkApertureSurface.h"
+#include "vtkMortonOrder.h"
 #include "vtkSphericalCap.h"
 
 #include "vtkAlgorithmOutput.h"
@@ -37,134 +41,502 @@
 #include <memory>
 #include <vector>
 
-#if defined(__SSE__) || defined(_M_X64)
-#endif
-
 vtkStandardNewMacro(vtkAperturePrecompute);
 
 namespace
 {
 constexpr double Pi = vtkMath::Pi();
-constexpr int Lanes = vtkApertureHemisphereSampler::Lanes;
+constexpr int Lanes = vtkApertureRayPacket::Lanes;
 
-// Where the results of one receiver go.
-struct Outputs
+// The caps of a surface's receiving points.
+struct Caps
 {
-  float* BentNormal;
-  float* ApertureRadius;
-  float* AmbientOcclusion; // may be null
+  std::vector<float> BentNormal, Radius, Occlusion;
 };
 
-// Casts the rays of a range of points of one surface and writes their caps.
+// Casts the rays of a range of receiving points of one surface and writes their caps.
 class CastRays
 {
 public:
-  CastRays(const vtkApertureSurface& surface, RTCScene scene,
-    const vtkApertureHemisphereSampler& sampler, float maximumDistance, Outputs outputs)
+  CastRays(const vtkApertureSurface& surface, const vtkApertureRayScene& scene,
+    const vtkApertureRaySampler& sampler, float maximumDistance, Caps& caps)
     : Surface(surface)
     , Scene(scene)
     , Sampler(sampler)
     , MaximumDistance(maximumDistance)
-    , Out(outputs)
+    , Out(caps)
   {
+    std::vector<float> positions(3 * surface.GetNumberOfPoints());
+    for (vtkIdType i = 0; i < surface.GetNumberOfPoints(); ++i)
+    {
+      std::copy_n(surface.GetPosition(i), 3, &positions[3 * i]);
+    }
+    this->Order = vtkMortonOrder::Order(positions.data(), surface.GetNumberOfPoints());
   }
 
   void operator()(vtkIdType begin, vtkIdType end) const
   {
-    vtkApertureRayScene::FlushToZero ftz;
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    alignas(64) RTCRay16 ray;
-    alignas(64) int valid[Lanes];
-    const int n = this->Sampler.GetNumberOfRays();
-    vtkApertureHemisphereSampler::Point point;
-
-    for (vtkIdType id = begin; id < end; ++id)
+    vtkApertureRayPacket packet(this->Scene, this->Surface);
+    for (vtkIdType k = begin; k < end; ++k)
     {
-      const float* nrm = this->Surface.GetNormal(id);
-      if (!this->Surface.Receives[id] || !this->Surface.Valid[id])
+      const vtkIdType id = this->Order[k];
+      if (this->Surface.Valid[id])
       {
-        // Points outside polygons are left open; invalid ones are closed.
-        const bool open = !this->Surface.Receives[id];
-        const bool hasNormal = this->Surface.Valid[id];
-        for (int k = 0; k < 3; ++k)
-        {
-          this->Out.BentNormal[3 * id + k] = (open && hasNormal) ? nrm[k] : (k == 2 ? 1.0f : 0.0f);
-        }
-        this->Out.ApertureRadius[id] = open ? static_cast<float>(0.5 * Pi) : 0.0f;
-        if (this->Out.AmbientOcclusion)
-        {
-          this->Out.AmbientOcclusion[id] = open ? 1.0f : 0.0f;
-        }
-        continue;
+        this->Cast(packet, id);
       }
-
-      this->Sampler.Begin(this->Surface, id, point);
-      int visible = 0;
-      double sum[3] = { 0.0, 0.0, 0.0 };
-      double cosSum = 0.0;
-      for (int first = 0; first < n; first += Lanes)
+      else
       {
-        this->Sampler.Fill(point, first, this->MaximumDistance, ray, valid);
-        rtcOccluded16(valid, this->Scene, &context, &ray);
-        for (int lane = 0; lane < Lanes; ++lane)
-        {
-          // Occluded rays come back with tfar = -inf.
-          if (valid[lane] && ray.tfar[lane] >= 0.0f)
-          {
-            ++visible;
-            sum[0] += ray.dir_x[lane];
-            sum[1] += ray.dir_y[lane];
-            sum[2] += ray.dir_z[lane];
-            cosSum +=
-              ray.dir_x[lane] * nrm[0] + ray.dir_y[lane] * nrm[1] + ray.dir_z[lane] * nrm[2];
-          }
-        }
-      }
-
-      const double solidAngle = 2.0 * Pi * visible / n;
-      this->Out.ApertureRadius[id] =
-        static_cast<float>(vtkSphericalCap::CapRadiusFromSolidAngle(solidAngle));
-      const double length = vtkMath::Norm(sum);
-      for (int k = 0; k < 3; ++k)
-      {
-        // A closed aperture keeps the normal as its (defined) axis.
-        this->Out.BentNormal[3 * id + k] =
-          length > 0.0 ? static_cast<float>(sum[k] / length) : nrm[k];
-      }
-      if (this->Out.AmbientOcclusion)
-      {
-        // Uniform hemisphere samples: (1/pi) * integral of V cos = (2/n) * sum of V cos.
-        this->Out.AmbientOcclusion[id] = static_cast<float>(std::min(1.0, 2.0 * cosSum / n));
+        // Closed, around +z.
+        std::fill_n(&this->Out.BentNormal[3 * id], 3, 0.0f);
+        this->Out.BentNormal[3 * id + 2] = 1.0f;
+        this->Out.Radius[id] = 0.0f;
       }
     }
   }
 
 private:
+  void Cast(vtkApertureRayPacket& packet, vtkIdType id) const
+  {
+    const float* nrm = this->Surface.GetNormal(id);
+    vtkApertureRaySampler::Point point;
+    this->Sampler.Begin(nrm, this->Surface.Key[id], point);
+    const int n = this->Sampler.GetNumberOfRays();
+    int visible = 0;
+    double sum[3] = { 0.0, 0.0, 0.0 };
+    double cosSum = 0.0;
+    for (int first = 0; first < n; first += Lanes)
+    {
+      const int count = std::min(Lanes, n - first);
+      this->Sampler.Directions(
+        point, first, count, packet.DirectionsX(), packet.DirectionsY(), packet.DirectionsZ());
+      packet.SetFan(id, count, this->MaximumDistance);
+      packet.Trace();
+      for (int lane = 0; lane < Lanes; ++lane)
+      {
+        if (packet.Visible(lane))
+        {
+          const double d[3] = { packet.DirectionX(lane), packet.DirectionY(lane),
+            packet.DirectionZ(lane) };
+          ++visible;
+          sum[0] += d[0];
+          sum[1] += d[1];
+          sum[2] += d[2];
+          cosSum += d[0] * nrm[0] + d[1] * nrm[1] + d[2] * nrm[2];
+        }
+      }
+    }
+    const double solidAngle = 2.0 * Pi * visible / n;
+    this->Out.Radius[id] = static_cast<float>(vtkSphericalCap::CapRadiusFromSolidAngle(solidAngle));
+    const double length = vtkMath::Norm(sum);
+    for (int k = 0; k < 3; ++k)
+    {
+      // A closed aperture keeps the normal as its (defined) axis.
+      this->Out.BentNormal[3 * id + k] =
+        length > 0.0 ? static_cast<float>(sum[k] / length) : nrm[k];
+    }
+    if (!this->Out.Occlusion.empty())
+    {
+      // Uniform hemisphere samples: (1/pi) * integral of V cos = (2/n) * sum of V cos.
+      this->Out.Occlusion[id] = static_cast<float>(std::min(1.0, 2.0 * cosSum / n));
+    }
+  }
+
   const vtkApertureSurface& Surface;
-  RTCScene Scene;
-  const vtkApertureHemisphereSampler& Sampler;
+  const vtkApertureRayScene& Scene;
+  const vtkApertureRaySampler& Sampler;
   float MaximumDistance;
-  Outputs Out;
+  Caps& Out;
+  std::vector<std::uint32_t> Order;
 };
 
-// One dataset that gets caps: the input leaf, its output, and its surface.
+// One dataset that gets caps: the input leaf (or its refinement), its output, and its surface.
 struct Receiver
 {
   vtkDataSet* Input;
   vtkDataSet* Output;
   vtkDataArray* Heights; // height fields only
+  vtkSmartPointer<vtkPolyData> Refined;
   vtkApertureSurface Surface;
+  Caps Results;
+
+  vtkDataSet* Source() const { return this->Refined ? this->Refined.Get() : this->Input; }
 };
 
-vtkSmartPointer<vtkFloatArray> NewArray(const std::string& name, int components, vtkIdType n)
+// Points on no polygon or strip look along their given normal, or +z.
+void OpenAroundNormals(
+  vtkFloatArray* bent, const std::vector<vtkIdType>& outputPoints, vtkDataArray* normals)
 {
-  auto array = vtkSmartPointer<vtkFloatArray>::New();
-  array->SetName(name.c_str());
-  array->SetNumberOfComponents(components);
-  array->SetNumberOfTuples(n);
-  return array;
+  for (size_t o = 0; o < outputPoints.size(); ++o)
+  {
+    double given[3] = { 0.0, 0.0, 1.0 };
+    if (outputPoints[o] != vtkApertureSurface::NotOnSurface || !normals ||
+      static_cast<vtkIdType>(o) >= normals->GetNumberOfTuples())
+    {
+      continue;
+    }
+    normals->GetTuple(static_cast<vtkIdType>(o), given);
+    if (vtkMath::Normalize(given) > 0.0)
+    {
+      bent->SetTuple(static_cast<vtkIdType>(o), given);
+    }
+  }
 }
+}
+
+//------------------------------------------------------------------------------
+// The state of one RequestData, step by step.
+class vtkAperturePrecompute::vtkRun
+{
+public:
+  vtkRun(vtkAperturePrecompute* self)
+    : Self(self)
+  {
+  }
+
+  bool CollectReceivers(vtkDataObject* input, vtkDataObject* output);
+  bool CheckReceivers();
+  void CollectOccluders(vtkInformationVector* occluderInfo);
+  bool Refine();
+  bool BuildSurfaces();
+  bool BuildScene();
+  bool Cast();
+  void WriteOutputs();
+  void Warn();
+
+  vtkAperturePrecompute* Self;
+  std::vector<std::unique_ptr<Receiver>> Receivers;
+  std::vector<vtkPolyData*> Occluders;
+  std::vector<vtkApertureSurface> OccluderSurfaces;
+  vtkApertureRayScene Scene;
+  vtkIdType TotalPoints = 0;
+  bool Aborted = false;
+};
+
+//------------------------------------------------------------------------------
+// Receivers: the input itself, or every leaf of a composite input.
+bool vtkAperturePrecompute::vtkRun::CollectReceivers(vtkDataObject* input, vtkDataObject* output)
+{
+  auto add = [&](vtkDataSet* in, vtkDataSet* out) {
+    this->Receivers.emplace_back(new Receiver{ in, out, nullptr, nullptr, {}, {} });
+  };
+  auto* compositeIn = vtkCompositeDataSet::SafeDownCast(input);
+  if (!compositeIn)
+  {
+    add(vtkDataSet::SafeDownCast(input), vtkDataSet::SafeDownCast(output));
+    return true;
+  }
+  auto* compositeOut = vtkCompositeDataSet::SafeDownCast(output);
+  compositeOut->CopyStructure(compositeIn);
+  auto it = vtk::TakeSmartPointer(compositeIn->NewIterator());
+  for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+  {
+    auto* leaf = vtkPolyData::SafeDownCast(it->GetCurrentDataObject());
+    if (!leaf)
+    {
+      vtkErrorWithObjectMacro(this->Self,
+        "Composite input must hold vtkPolyData leaves, found "
+          << it->GetCurrentDataObject()->GetClassName() << ".");
+      return false;
+    }
+    auto copy = vtkSmartPointer<vtkPolyData>::New();
+    compositeOut->SetDataSet(it, copy);
+    add(leaf, copy);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Checks the input before any work: grids, heights, cells, point ids.
+bool vtkAperturePrecompute::vtkRun::CheckReceivers()
+{
+  vtkIdType surfaceCells = 0;
+  for (const auto& r : this->Receivers)
+  {
+    this->TotalPoints += r->Input->GetNumberOfPoints();
+    if (auto* image = vtkImageData::SafeDownCast(r->Input))
+    {
+      const int* dims = image->GetDimensions();
+      if (dims[2] != 1 || dims[0] < 2 || dims[1] < 2)
+      {
+        vtkErrorWithObjectMacro(this->Self,
+          "A height field must be a 2D grid of at least 2 x 2 points in the xy plane of its "
+          "index space; got dimensions "
+            << dims[0] << " x " << dims[1] << " x " << dims[2] << ".");
+        return false;
+      }
+      r->Heights = this->Self->GetInputArrayToProcess(0, image);
+      if (!r->Heights)
+      {
+        vtkErrorWithObjectMacro(
+          this->Self, "The height field has no point scalars (or no array to process).");
+        return false;
+      }
+      if (r->Heights->GetNumberOfComponents() != 1 ||
+        r->Heights->GetNumberOfTuples() != image->GetNumberOfPoints())
+      {
+        vtkErrorWithObjectMacro(this->Self,
+          "Height field scalars '"
+            << (r->Heights->GetName() ? r->Heights->GetName() : "")
+            << "' must have one component and one value per point; they have "
+            << r->Heights->GetNumberOfComponents() << " component(s) and "
+            << r->Heights->GetNumberOfTuples() << " tuples.");
+        return false;
+      }
+      surfaceCells += image->GetNumberOfCells();
+    }
+    else if (auto* poly = vtkPolyData::SafeDownCast(r->Input))
+    {
+      const std::string bad = vtkApertureCellCheck::FindBadCell(poly);
+      if (!bad.empty())
+      {
+        vtkErrorWithObjectMacro(this->Self, "Cannot use the input: " << bad << ".");
+        return false;
+      }
+      surfaceCells += poly->GetNumberOfPolys() + poly->GetNumberOfStrips();
+    }
+  }
+  if (this->TotalPoints == 0)
+  {
+    vtkErrorWithObjectMacro(
+      this->Self, "The input is empty: there are no points to compute apertures for.");
+    return false;
+  }
+  if (surfaceCells == 0)
+  {
+    vtkErrorWithObjectMacro(
+      this->Self, "The input has no polygons or triangle strips: nothing casts or receives rays.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkAperturePrecompute::vtkRun::CollectOccluders(vtkInformationVector* occluderInfo)
+{
+  for (int i = 0; i < occluderInfo->GetNumberOfInformationObjects(); ++i)
+  {
+    if (auto* occluder = vtkPolyData::GetData(occluderInfo, i))
+    {
+      this->Occluders.push_back(occluder);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkAperturePrecompute::vtkRun::Refine()
+{
+  const double length = this->Self->GetMaximumEdgeLength();
+  for (const auto& r : this->Receivers)
+  {
+    auto* poly = vtkPolyData::SafeDownCast(r->Input);
+    if (length <= 0.0 || !poly)
+    {
+      continue;
+    }
+    r->Refined = vtkSmartPointer<vtkPolyData>::New();
+    std::string error;
+    if (!vtkApertureRefinement::Refine(poly, length, r->Refined, error))
+    {
+      vtkErrorWithObjectMacro(this->Self, "Cannot refine the input: " << error << ".");
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Every surface around one local origin, which keeps single precision where the geometry is.
+bool vtkAperturePrecompute::vtkRun::BuildSurfaces()
+{
+  vtkAperturePrecompute* self = this->Self;
+  double bounds[6];
+  vtkApertureSurface::InitializeBounds(bounds);
+  for (const auto& r : this->Receivers)
+  {
+    if (auto* image = vtkImageData::SafeDownCast(r->Input))
+    {
+      vtkApertureSurface::ExpandBounds(image, r->Heights, self->HeightScale, bounds);
+    }
+    else
+    {
+      vtkApertureSurface::ExpandBounds(vtkPolyData::SafeDownCast(r->Source()), bounds);
+    }
+  }
+  for (vtkPolyData* occluder : this->Occluders)
+  {
+    vtkApertureSurface::ExpandBounds(occluder, bounds);
+  }
+  double origin[3];
+  vtkApertureSurface::OriginOf(bounds, origin);
+
+  std::string error;
+  for (const auto& r : this->Receivers)
+  {
+    auto* image = vtkImageData::SafeDownCast(r->Input);
+    const bool ok = image
+      ? r->Surface.SetHeightField(image, r->Heights, self->HeightScale, origin, error)
+      : r->Surface.SetPolyData(
+          vtkPolyData::SafeDownCast(r->Source()), origin, self->FeatureAngle, error);
+    if (!ok)
+    {
+      vtkErrorWithObjectMacro(self, "Cannot use the input: " << error << ".");
+      return false;
+    }
+    r->Surface.SetRayOffset(self->RayOffset);
+  }
+  this->OccluderSurfaces.resize(this->Occluders.size());
+  for (size_t i = 0; i < this->Occluders.size(); ++i)
+  {
+    if (!this->OccluderSurfaces[i].SetPolyData(
+          this->Occluders[i], origin, self->FeatureAngle, error))
+    {
+      vtkErrorWithObjectMacro(self, "Cannot use occluder " << i << ": " << error << ".");
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAperturePrecompute::vtkRun::BuildScene()
+{
+  std::vector<const vtkApertureSurface*> receivers, occluders;
+  for (const auto& r : this->Receivers)
+  {
+    receivers.push_back(&r->Surface);
+  }
+  for (const auto& s : this->OccluderSurfaces)
+  {
+    occluders.push_back(&s);
+  }
+  if (!this->Scene.Build(
+        receivers, occluders, this->Self->AccelerationStructure, this->Self->EmbreeConfiguration))
+  {
+    vtkErrorWithObjectMacro(this->Self, "Embree failed: " << this->Scene.GetError());
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Rays, in batches of about a million so that progress and aborts are seen often.
+bool vtkAperturePrecompute::vtkRun::Cast()
+{
+  vtkAperturePrecompute* self = this->Self;
+  const vtkApertureRaySampler sampler(self->NumberOfRays, self->Seed, self->Sampling == RANDOM);
+  const vtkIdType batch = std::max<vtkIdType>(64, (1 << 20) / self->NumberOfRays);
+  const float maximumDistance = self->MaximumDistance >= FLT_MAX
+    ? std::numeric_limits<float>::infinity()
+    : static_cast<float>(self->MaximumDistance);
+  vtkIdType casting = 0;
+  for (const auto& r : this->Receivers)
+  {
+    casting += r->Surface.GetNumberOfPoints();
+  }
+  vtkIdType done = 0;
+  self->UpdateProgress(0.0);
+  for (const auto& r : this->Receivers)
+  {
+    const vtkIdType n = r->Surface.GetNumberOfPoints();
+    r->Results.BentNormal.resize(3 * n);
+    r->Results.Radius.resize(n);
+    r->Results.Occlusion.assign(self->ComputeAmbientOcclusion ? n : 0, 0.0f);
+    const CastRays cast(r->Surface, this->Scene, sampler, maximumDistance, r->Results);
+    for (vtkIdType first = 0; first < n; first += batch)
+    {
+      vtkSMPTools::For(first, std::min(n, first + batch), 16, cast);
+      done += std::min(batch, n - first);
+      self->UpdateProgress(static_cast<double>(done) / std::max<vtkIdType>(casting, 1));
+      if (self->GetAbortExecute())
+      {
+        this->Aborted = true;
+        return true;
+      }
+    }
+  }
+  const std::string embreeError = this->Scene.GetError();
+  if (!embreeError.empty())
+  {
+    vtkErrorWithObjectMacro(self, "Embree failed while tracing: " << embreeError);
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Each receiver's output: its input (split at creases, or refined) with the caps per point.
+void vtkAperturePrecompute::vtkRun::WriteOutputs()
+{
+  vtkAperturePrecompute* self = this->Self;
+  const float openRadius = static_cast<float>(0.5 * Pi), closedRadius = 0.0f;
+  const float openOcclusion = 1.0f, closedOcclusion = 0.0f;
+  const float up[3] = { 0.0f, 0.0f, 1.0f };
+  const float noNormal[3] = { 0.0f, 0.0f, 0.0f };
+  for (const auto& r : this->Receivers)
+  {
+    std::vector<vtkIdType> points;
+    if (auto* poly = vtkPolyData::SafeDownCast(r->Source()))
+    {
+      r->Surface.MakeOutput(poly, vtkPolyData::SafeDownCast(r->Output), points);
+    }
+    else
+    {
+      r->Output->ShallowCopy(r->Input);
+      points = r->Surface.InputPoints;
+    }
+    const Caps& c = r->Results;
+    vtkPointData* pd = r->Output->GetPointData();
+    auto bent = vtkApertureSurface::Scatter(self->BentNormalArrayName, 3, c.BentNormal.data(),
+      c.BentNormal.data() + c.BentNormal.size(), points, up, up);
+    OpenAroundNormals(bent, points, r->Source()->GetPointData()->GetNormals());
+    pd->AddArray(bent);
+    pd->AddArray(vtkApertureSurface::Scatter(self->ApertureRadiusArrayName, 1, c.Radius.data(),
+      c.Radius.data() + c.Radius.size(), points, &openRadius, &closedRadius));
+    if (!c.Occlusion.empty())
+    {
+      pd->AddArray(
+        vtkApertureSurface::Scatter(self->AmbientOcclusionArrayName, 1, c.Occlusion.data(),
+          c.Occlusion.data() + c.Occlusion.size(), points, &openOcclusion, &closedOcclusion));
+    }
+    if (r->Surface.NormalsComputed)
+    {
+      const float* normals = r->Surface.GetNormal(0);
+      pd->SetNormals(vtkApertureSurface::Scatter("Normals", 3, normals,
+        normals + 3 * r->Surface.GetNumberOfPoints(), points, noNormal, noNormal));
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkAperturePrecompute::vtkRun::Warn()
+{
+  vtkIdType nonFinite = 0, undefinedNormals = 0, flipped = 0;
+  for (const auto& r : this->Receivers)
+  {
+    nonFinite += r->Surface.NonFinitePoints;
+    undefinedNormals += r->Surface.UndefinedNormals;
+    flipped += r->Surface.FlippedNormals;
+  }
+  if (nonFinite > 0)
+  {
+    vtkWarningWithObjectMacro(
+      this->Self, << nonFinite
+                  << " point(s) are not finite (NaN or infinite); they get a "
+                     "closed aperture and no cell that uses them casts shadows.");
+  }
+  if (undefinedNormals > 0)
+  {
+    vtkWarningWithObjectMacro(this->Self, << undefinedNormals
+                                          << " point(s) have no defined normal (only degenerate "
+                                             "cells use them); they get a closed aperture.");
+  }
+  if (flipped > 0)
+  {
+    vtkWarningWithObjectMacro(
+      this->Self, << flipped
+                  << " given normal(s) point against the winding of their cells; "
+                     "their apertures face the way the normals do.");
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -224,238 +596,22 @@ int vtkAperturePrecompute::RequestData(
     vtkErrorMacro("Missing input or output.");
     return 0;
   }
-  auto fail = [output]()
+  // 1. Receivers and occluders, checked before any work.
+  vtkRun run(this);
+  bool ok = run.CollectReceivers(input, output) && run.CheckReceivers();
+  run.CollectOccluders(inputVector[1]);
+  // 2. Their surfaces (refined, welded, split at creases) and one Embree scene.
+  ok = ok && run.Refine() && run.BuildSurfaces() && run.BuildScene();
+  // 3. The rays of every receiving point.
+  ok = ok && run.Cast();
+  if (!ok || run.Aborted)
   {
     output->Initialize();
-    return 0;
-  };
-
-  // Receivers: the input itself, or every non-empty leaf of a composite input.
-  std::vector<std::unique_ptr<Receiver>> receivers;
-  auto addReceiver = [&](vtkDataSet* in, vtkDataSet* out) {
-    receivers.emplace_back(new Receiver{ in, out, nullptr, {} });
-  };
-  if (auto* compositeIn = vtkCompositeDataSet::SafeDownCast(input))
-  {
-    auto* compositeOut = vtkCompositeDataSet::SafeDownCast(output);
-    compositeOut->CopyStructure(compositeIn);
-    auto it = vtk::TakeSmartPointer(compositeIn->NewIterator());
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-    {
-      auto* leaf = vtkPolyData::SafeDownCast(it->GetCurrentDataObject());
-      if (!leaf)
-      {
-        vtkErrorMacro("Composite input must hold vtkPolyData leaves, found "
-          << it->GetCurrentDataObject()->GetClassName() << ".");
-        return fail();
-      }
-      auto copy = vtkSmartPointer<vtkPolyData>::New();
-      copy->ShallowCopy(leaf);
-      compositeOut->SetDataSet(it, copy);
-      addReceiver(leaf, copy);
-    }
+    return ok ? 1 : 0;
   }
-  else
-  {
-    output->ShallowCopy(input);
-    addReceiver(vtkDataSet::SafeDownCast(input), vtkDataSet::SafeDownCast(output));
-  }
-
-  // Check the input before any work.
-  vtkIdType surfaceCells = 0;
-  vtkIdType totalPoints = 0;
-  for (const auto& r : receivers)
-  {
-    totalPoints += r->Input->GetNumberOfPoints();
-    if (auto* image = vtkImageData::SafeDownCast(r->Input))
-    {
-      const int* dims = image->GetDimensions();
-      if (dims[2] != 1 || dims[0] < 2 || dims[1] < 2)
-      {
-        vtkErrorMacro("A height field must be a 2D grid of at least 2 x 2 points in the xy "
-                      "plane of its index space; got dimensions "
-          << dims[0] << " x " << dims[1] << " x " << dims[2] << ".");
-        return fail();
-      }
-      r->Heights = this->GetInputArrayToProcess(0, image);
-      if (!r->Heights)
-      {
-        vtkErrorMacro("The height field has no point scalars (or no array to process).");
-        return fail();
-      }
-      if (r->Heights->GetNumberOfComponents() != 1 ||
-        r->Heights->GetNumberOfTuples() != image->GetNumberOfPoints())
-      {
-        vtkErrorMacro("Height field scalars '"
-          << (r->Heights->GetName() ? r->Heights->GetName() : "") << "' must have one component "
-          << "and one value per point; they have " << r->Heights->GetNumberOfComponents()
-          << " component(s) and " << r->Heights->GetNumberOfTuples() << " tuples.");
-        return fail();
-      }
-      surfaceCells += image->GetNumberOfCells();
-    }
-    else if (auto* poly = vtkPolyData::SafeDownCast(r->Input))
-    {
-      surfaceCells += poly->GetNumberOfPolys() + poly->GetNumberOfStrips();
-    }
-  }
-  if (totalPoints == 0)
-  {
-    vtkErrorMacro("The input is empty: there are no points to compute apertures for.");
-    return fail();
-  }
-  if (surfaceCells == 0)
-  {
-    vtkErrorMacro("The input has no polygons or triangle strips: nothing casts or receives rays.");
-    return fail();
-  }
-
-  // Occluders on port 1.
-  std::vector<vtkPolyData*> occluders;
-  for (int i = 0; i < inputVector[1]->GetNumberOfInformationObjects(); ++i)
-  {
-    if (auto* occluder = vtkPolyData::GetData(inputVector[1], i))
-    {
-      occluders.push_back(occluder);
-    }
-  }
-
-  // One local origin for everything keeps single precision where the geometry is.
-  double bounds[6];
-  vtkApertureSurface::InitializeBounds(bounds);
-  for (const auto& r : receivers)
-  {
-    if (auto* image = vtkImageData::SafeDownCast(r->Input))
-    {
-      vtkApertureSurface::ExpandBounds(image, r->Heights, this->HeightScale, bounds);
-    }
-    else
-    {
-      vtkApertureSurface::ExpandBounds(vtkPolyData::SafeDownCast(r->Input), bounds);
-    }
-  }
-  for (vtkPolyData* occluder : occluders)
-  {
-    vtkApertureSurface::ExpandBounds(occluder, bounds);
-  }
-  double origin[3];
-  vtkApertureSurface::OriginOf(bounds, origin);
-
-  std::string error;
-  for (const auto& r : receivers)
-  {
-    auto* image = vtkImageData::SafeDownCast(r->Input);
-    const bool ok = image
-      ? r->Surface.SetHeightField(image, r->Heights, this->HeightScale, origin, error)
-      : r->Surface.SetPolyData(vtkPolyData::SafeDownCast(r->Input), origin, error);
-    if (!ok)
-    {
-      vtkErrorMacro("Cannot use the input: " << error << ".");
-      return fail();
-    }
-  }
-  std::vector<vtkApertureSurface> occluderSurfaces(occluders.size());
-  for (size_t i = 0; i < occluders.size(); ++i)
-  {
-    if (!occluderSurfaces[i].SetPolyData(occluders[i], origin, error))
-    {
-      vtkErrorMacro("Cannot use occluder " << i << ": " << error << ".");
-      return fail();
-    }
-  }
-
-  vtkApertureRayScene scene;
-  bool built = scene.Initialize(this->EmbreeConfiguration, this->CompactAccelerationStructure);
-  for (const auto& r : receivers)
-  {
-    built = built && scene.AddSurface(r->Surface);
-  }
-  for (const auto& s : occluderSurfaces)
-  {
-    built = built && scene.AddSurface(s);
-  }
-  built = built && scene.Commit();
-  if (!built)
-  {
-    vtkErrorMacro("Embree failed: " << scene.GetError());
-    return fail();
-  }
-
-  // Rays, in batches of about a million so that progress and aborts are seen often.
-  const vtkApertureHemisphereSampler sampler(
-    this->NumberOfRays, this->Seed, this->Sampling == RANDOM, this->RayOffset);
-  const vtkIdType batch = std::max<vtkIdType>(64, (1 << 20) / this->NumberOfRays);
-  const float maximumDistance = this->MaximumDistance >= FLT_MAX
-    ? std::numeric_limits<float>::infinity()
-    : static_cast<float>(this->MaximumDistance);
-  vtkIdType done = 0;
-  vtkIdType nonFinite = 0, undefinedNormals = 0, flipped = 0;
-  this->UpdateProgress(0.0);
-  for (const auto& receiver : receivers)
-  {
-    Receiver& r = *receiver;
-    const vtkIdType n = r.Surface.GetNumberOfPoints();
-    auto bent = NewArray(this->BentNormalArrayName, 3, n);
-    auto radius = NewArray(this->ApertureRadiusArrayName, 1, n);
-    auto occlusion =
-      this->ComputeAmbientOcclusion ? NewArray(this->AmbientOcclusionArrayName, 1, n) : nullptr;
-    const Outputs outputs = { bent->GetPointer(0), radius->GetPointer(0),
-      occlusion ? occlusion->GetPointer(0) : nullptr };
-    // Rays depend on the seed and the point id only: a leaf of a composite dataset gets the same
-    // rays as the same mesh run alone.
-    const CastRays cast(r.Surface, scene.GetScene(), sampler, maximumDistance, outputs);
-    for (vtkIdType first = 0; first < n; first += batch)
-    {
-      vtkSMPTools::For(first, std::min(n, first + batch), 16, cast);
-      done += std::min(batch, n - first);
-      this->UpdateProgress(static_cast<double>(done) / totalPoints);
-      if (this->GetAbortExecute())
-      {
-        output->Initialize();
-        return 1;
-      }
-    }
-
-    vtkPointData* pd = r.Output->GetPointData();
-    pd->AddArray(bent);
-    pd->AddArray(radius);
-    if (occlusion)
-    {
-      pd->AddArray(occlusion);
-    }
-    if (r.Surface.NormalsComputed)
-    {
-      pd->SetNormals(r.Surface.Normals);
-    }
-    nonFinite += r.Surface.NonFinitePoints;
-    undefinedNormals += r.Surface.UndefinedNormals;
-    flipped += r.Surface.FlippedNormals;
-  }
-
-  const std::string embreeError = scene.GetError();
-  if (!embreeError.empty())
-  {
-    vtkErrorMacro("Embree failed while tracing: " << embreeError);
-    return fail();
-  }
-  if (nonFinite > 0)
-  {
-    vtkWarningMacro(<< nonFinite
-                    << " point(s) are not finite (NaN or infinite); they get a "
-                       "closed aperture and no cell that uses them casts shadows.");
-  }
-  if (undefinedNormals > 0)
-  {
-    vtkWarningMacro(<< undefinedNormals
-                    << " point(s) have no defined normal (only degenerate "
-                       "cells use them); they get a closed aperture.");
-  }
-  if (flipped > 0)
-  {
-    vtkWarningMacro(<< flipped
-                    << " given normal(s) point against the winding of their cells; "
-                       "their apertures face the way the normals do.");
-  }
+  // 4. The caps on the output's points.
+  run.WriteOutputs();
+  run.Warn();
   return 1;
 }
 
@@ -463,6 +619,7 @@ int vtkAperturePrecompute::RequestData(
 void vtkAperturePrecompute::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  static const char* const structures[] = { "Automatic", "Compact", "Fast" };
   os << indent << "NumberOfRays: " << this->NumberOfRays << "\n";
   os << indent << "MaximumDistance: " << this->MaximumDistance << "\n";
   os << indent << "RayOffset: " << this->RayOffset << "\n";
@@ -470,10 +627,12 @@ void vtkAperturePrecompute::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Sampling: " << (this->Sampling == RANDOM ? "Random" : "Stratified") << "\n";
   os << indent << "HeightScale: " << this->HeightScale << "\n";
   os << indent << "ComputeAmbientOcclusion: " << this->ComputeAmbientOcclusion << "\n";
+  os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
+  os << indent << "MaximumEdgeLength: " << this->MaximumEdgeLength << "\n";
   os << indent << "BentNormalArrayName: " << this->BentNormalArrayName << "\n";
   os << indent << "ApertureRadiusArrayName: " << this->ApertureRadiusArrayName << "\n";
   os << indent << "AmbientOcclusionArrayName: " << this->AmbientOcclusionArrayName << "\n";
-  os << indent << "CompactAccelerationStructure: " << this->CompactAccelerationStructure << "\n";
+  os << indent << "AccelerationStructure: " << structures[this->AccelerationStructure] << "\n";
   os << indent << "EmbreeConfiguration: " << this->EmbreeConfiguration << "\n";
   os << indent << "NumberOfOccluders: " << this->GetNumberOfInputConnections(1) << "\n";
 }

@@ -37,14 +37,24 @@
  * Input port 1 (optional, repeatable, AddOccluderConnection()) takes extra vtkPolyData
  * occluders that cast shadows but get no output.
  *
+ * Real meshes (see vtkApertureSurface for how): points at the same position are one surface
+ * point, with one aperture, whatever the file's texture seams split; triangles are wound
+ * consistently; a crease (an edge whose faces' normals differ by more than FeatureAngle, or
+ * given normals further apart) gives each side its own normal and aperture. When the input
+ * shares a point across a crease the output splits it, as vtkPolyDataNormals does, copying its
+ * point data; otherwise the output has the input's points and cells. MaximumEdgeLength > 0
+ * refines the surface first: the output is then the refined surface, its point data
+ * interpolated. A point lying on another surface sees the open half of its hemisphere (contact),
+ * and folded or sliver triangles of its own do not close it (self-hits): see vtkApertureRayScene.
+ *
  * The output has the input's type and keeps every input array; the input is never modified. When
  * the input has no usable point normals, the normals that were used are added as `Normals`
- * (unweighted sums of triangle normals, with consistent orientation, as vtkPolyDataNormals
- * computes them without splitting; the +z side of the grid for height fields).
+ * (the normalised sums of the unit normals of each side's triangles; the +z side of the grid for
+ * height fields).
  *
  * Sampling is deterministic: the Hammersley set of NumberOfRays points, uniform over the
  * hemisphere's solid angle, shifted per point by a Cranley-Patterson rotation derived from Seed
- * and the point id (SetSamplingToRandom() draws independent uniform samples instead, for
+ * and the point's position (SetSamplingToRandom() draws independent uniform samples instead, for
  * comparison). Rays start RayOffset × (mean length of the point's edges) above the point along its
  * normal, at least far enough to clear single-precision rounding, and stop at MaximumDistance.
  * Geometry is translated to a local origin before it reaches Embree, so UTM-sized coordinates
@@ -55,8 +65,9 @@
  * batches. An aborted run produces an empty output.
  *
  * Points that are not finite, or whose normal is undefined, get a closed aperture (r = 0) with
- * BentNormal (0, 0, 1) and one warning. Empty input, input without polygons or strips, image data
- * that is not a 2D grid with one-component scalars, and Embree failures are errors.
+ * BentNormal (0, 0, 1) and one warning. Empty input, input without polygons or strips, a cell
+ * with a point id outside the points, image data that is not a 2D grid with one-component
+ * scalars, and Embree failures are errors.
  *
  * @sa vtkSphericalCap vtkApertureLightingMapper
  */
@@ -165,12 +176,43 @@ public:
 
   ///@{
   /**
-   * Build Embree's compact BVH (on by default): on the bunny it takes about 70% of the memory of
-   * the default layout and traces at about 75% of its speed. Turn it off when speed matters more.
+   * Creases: where the normals of two faces sharing an edge differ by more than this angle
+   * (degrees, 0 to 180), each side gets its own normal and aperture; with given normals, points
+   * welded together whose normals differ by more. Default 60: the 90 degree edges of CAD parts
+   * split, tessellated curves of 8 or more segments and the noise of scans do not. 180 never
+   * splits.
    */
-  vtkSetMacro(CompactAccelerationStructure, bool);
-  vtkGetMacro(CompactAccelerationStructure, bool);
-  vtkBooleanMacro(CompactAccelerationStructure, bool);
+  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
+  vtkGetMacro(FeatureAngle, double);
+  ///@}
+
+  ///@{
+  /**
+   * Polydata only: when positive, triangles are split until no edge is longer (world units), so
+   * that large faces get points enough for contact shadows; the output is then the refined
+   * surface. Default 0: no refinement.
+   */
+  vtkSetClampMacro(MaximumEdgeLength, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumEdgeLength, double);
+  ///@}
+
+  enum AccelerationStructures
+  {
+    AUTOMATIC = 0,
+    COMPACT = 1,
+    FAST = 2
+  };
+
+  ///@{
+  /**
+   * Embree's acceleration structure. AUTOMATIC (default) builds the fast one up to 8 million
+   * triangles and the compact one above (about 70% of the memory, 75% of the speed).
+   */
+  vtkSetClampMacro(AccelerationStructure, int, AUTOMATIC, FAST);
+  vtkGetMacro(AccelerationStructure, int);
+  void SetAccelerationStructureToAutomatic() { this->SetAccelerationStructure(AUTOMATIC); }
+  void SetAccelerationStructureToCompact() { this->SetAccelerationStructure(COMPACT); }
+  void SetAccelerationStructureToFast() { this->SetAccelerationStructure(FAST); }
   ///@}
 
   ///@{
@@ -197,7 +239,9 @@ protected:
   int Sampling = STRATIFIED;
   double HeightScale = 1.0;
   bool ComputeAmbientOcclusion = false;
-  bool CompactAccelerationStructure = true;
+  double FeatureAngle = 60.0;
+  double MaximumEdgeLength = 0.0;
+  int AccelerationStructure = AUTOMATIC;
   std::string BentNormalArrayName = "BentNormal";
   std::string ApertureRadiusArrayName = "ApertureRadius";
   std::string AmbientOcclusionArrayName = "AmbientOcclusion";
@@ -206,6 +250,8 @@ protected:
 private:
   vtkAperturePrecompute(const vtkAperturePrecompute&) = delete;
   void operator=(const vtkAperturePrecompute&) = delete;
+
+  class vtkRun; // the steps of one RequestData
 };
 
 #endif

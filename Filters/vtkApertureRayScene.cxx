@@ -10,6 +10,7 @@
 =========================================================================*/
 #include "vtkApertureRayScene.h"
 
+#include "vtkApertureRayRisks.h"
 #include "vtkApertureSurface.h"
 
 namespace
@@ -50,6 +51,12 @@ vtkApertureRayScene::~vtkApertureRayScene()
 }
 
 //------------------------------------------------------------------------------
+bool vtkApertureRayScene::IsCompact(int structure, vtkIdType triangles)
+{
+  return structure == COMPACT || (structure == AUTOMATIC && triangles > CompactThreshold);
+}
+
+//------------------------------------------------------------------------------
 void vtkApertureRayScene::ReportError(void* self, RTCError code, const char* message)
 {
   auto* scene = static_cast<vtkApertureRayScene*>(self);
@@ -57,6 +64,42 @@ void vtkApertureRayScene::ReportError(void* self, RTCError code, const char* mes
   if (scene->Error.empty())
   {
     scene->Error = ErrorName(code) + (message ? std::string(": ") + message : std::string());
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureRayScene::Filter(const RTCFilterFunctionNArguments* args)
+{
+  const auto* context = reinterpret_cast<const Context*>(args->context);
+  const vtkApertureSurface* source = context->Source;
+  const auto* geometry = static_cast<const Filtered*>(args->geometryUserPtr);
+  const bool own = geometry->Surface == source;
+  const unsigned int n = args->N;
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    if (args->valid[i] != -1)
+    {
+      continue;
+    }
+    const bool front = RTCRayN_dir_x(args->ray, n, i) * RTCHitN_Ng_x(args->hit, n, i) +
+        RTCRayN_dir_y(args->ray, n, i) * RTCHitN_Ng_y(args->hit, n, i) +
+        RTCRayN_dir_z(args->ray, n, i) * RTCHitN_Ng_z(args->hit, n, i) <
+      0.0f;
+    const unsigned int point = RTCRayN_id(args->ray, n, i);
+    bool incident = false;
+    if (own)
+    {
+      const std::uint32_t* triangle =
+        &source->Triangles[3 * size_t(geometry->Triangles[RTCHitN_primID(args->hit, n, i)])];
+      const std::uint32_t vertex = source->PointVertex[point];
+      incident = triangle[0] == vertex || triangle[1] == vertex || triangle[2] == vertex;
+    }
+    const bool near = RTCRayN_tfar(args->ray, n, i) <= NearZone * source->Offset[point];
+    const bool blocks = front || (!near && !incident);
+    if (!blocks)
+    {
+      args->valid[i] = 0;
+    }
   }
 }
 
@@ -74,8 +117,17 @@ bool vtkApertureRayScene::Failed()
 }
 
 //------------------------------------------------------------------------------
-bool vtkApertureRayScene::Initialize(const std::string& configuration, bool compact)
+bool vtkApertureRayScene::Build(const std::vector<const vtkApertureSurface*>& receivers,
+  const std::vector<const vtkApertureSurface*>& occluders, int structure,
+  const std::string& configuration)
 {
+  std::vector<const vtkApertureSurface*> surfaces = receivers;
+  surfaces.insert(surfaces.end(), occluders.begin(), occluders.end());
+  vtkIdType triangles = 0;
+  for (const vtkApertureSurface* s : surfaces)
+  {
+    triangles += s->GetNumberOfTriangles();
+  }
   this->Device = rtcNewDevice(configuration.c_str());
   if (!this->Device)
   {
@@ -87,21 +139,67 @@ bool vtkApertureRayScene::Initialize(const std::string& configuration, bool comp
   }
   rtcSetDeviceErrorFunction(this->Device, &vtkApertureRayScene::ReportError, this);
   this->Scene = rtcNewScene(this->Device);
-  if (this->Scene)
+  if (!this->Scene || this->Failed())
   {
-    // Robust traversal does not let rays slip between triangles sharing an edge.
-    rtcSetSceneFlags(this->Scene,
-      static_cast<RTCSceneFlags>(RTC_SCENE_FLAG_ROBUST | (compact ? RTC_SCENE_FLAG_COMPACT : 0)));
-    rtcSetSceneBuildQuality(this->Scene, RTC_BUILD_QUALITY_MEDIUM);
+    return false;
   }
-  return this->Scene && !this->Failed();
+  // Robust traversal does not let rays slip between triangles sharing an edge.
+  rtcSetSceneFlags(this->Scene,
+    static_cast<RTCSceneFlags>(
+      RTC_SCENE_FLAG_ROBUST | (IsCompact(structure, triangles) ? RTC_SCENE_FLAG_COMPACT : 0)));
+  rtcSetSceneBuildQuality(this->Scene, RTC_BUILD_QUALITY_MEDIUM);
+  const vtkApertureRayRisks risks(receivers);
+  bool built = true;
+  for (size_t k = 0; k < surfaces.size() && built; ++k)
+  {
+    built = this->AddSurface(*surfaces[k], risks.Find(*surfaces[k], k < receivers.size()));
+  }
+  if (built)
+  {
+    rtcCommitScene(this->Scene);
+  }
+  return built && !this->Failed();
 }
 
 //------------------------------------------------------------------------------
-bool vtkApertureRayScene::AddSurface(const vtkApertureSurface& surface)
+bool vtkApertureRayScene::Build(const vtkApertureSurface& receivers,
+  const std::vector<vtkApertureSurface>& occluders, int structure)
 {
-  const size_t triangles = surface.Triangles.size() / 3;
-  if (triangles == 0)
+  std::vector<const vtkApertureSurface*> others;
+  for (const vtkApertureSurface& occluder : occluders)
+  {
+    others.push_back(&occluder);
+  }
+  return this->Build({ &receivers }, others, structure);
+}
+
+//------------------------------------------------------------------------------
+bool vtkApertureRayScene::AddSurface(
+  const vtkApertureSurface& surface, const std::vector<unsigned char>& risky)
+{
+  std::unique_ptr<Filtered> filtered(new Filtered{ &surface, {}, {} });
+  std::vector<std::uint32_t> plain;
+  for (size_t t = 0; t < risky.size(); ++t)
+  {
+    auto& to = risky[t] ? filtered->Indices : plain;
+    to.insert(to.end(), &surface.Triangles[3 * t], &surface.Triangles[3 * t + 3]);
+    if (risky[t])
+    {
+      filtered->Triangles.push_back(static_cast<std::uint32_t>(t));
+    }
+  }
+  this->FilteredTriangles += static_cast<vtkIdType>(filtered->Triangles.size());
+  this->Plain.push_back(std::move(plain));
+  this->Risky.push_back(std::move(filtered));
+  return this->AddGeometry(surface, this->Plain.back(), nullptr) &&
+    this->AddGeometry(surface, this->Risky.back()->Indices, this->Risky.back().get());
+}
+
+//------------------------------------------------------------------------------
+bool vtkApertureRayScene::AddGeometry(
+  const vtkApertureSurface& surface, const std::vector<std::uint32_t>& indices, Filtered* filtered)
+{
+  if (indices.empty())
   {
     return true;
   }
@@ -111,30 +209,16 @@ bool vtkApertureRayScene::AddSurface(const vtkApertureSurface& surface)
     return false;
   }
   rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-    surface.Points.data(), 0, 3 * sizeof(float), surface.GetNumberOfPoints());
-  rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-    surface.Triangles.data(), 0, 3 * sizeof(std::uint32_t), triangles);
+    surface.Vertices.data(), 0, 3 * sizeof(float), surface.GetNumberOfVertices());
+  rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, indices.data(),
+    0, 3 * sizeof(std::uint32_t), indices.size() / 3);
+  if (filtered)
+  {
+    rtcSetGeometryUserData(geometry, filtered);
+    rtcSetGeometryOccludedFilterFunction(geometry, &vtkApertureRayScene::Filter);
+  }
   rtcCommitGeometry(geometry);
   rtcAttachGeometry(this->Scene, geometry);
   rtcReleaseGeometry(geometry);
   return !this->Failed();
-}
-
-//------------------------------------------------------------------------------
-bool vtkApertureRayScene::Commit()
-{
-  rtcCommitScene(this->Scene);
-  return !this->Failed();
-}
-
-//------------------------------------------------------------------------------
-bool vtkApertureRayScene::Build(
-  const vtkApertureSurface& receivers, const std::vector<vtkApertureSurface>& occluders)
-{
-  bool built = this->Initialize(std::string(), false) && this->AddSurface(receivers);
-  for (const vtkApertureSurface& occluder : occluders)
-  {
-    built = built && this->AddSurface(occluder);
-  }
-  return built && this->Commit();
 }

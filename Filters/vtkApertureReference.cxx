@@ -10,7 +10,8 @@
 =========================================================================*/
 #include "vtkApertureReference.h"
 
-#include "vtkApertureHemisphereSampler.h"
+#include "vtkApertureRayPacket.h"
+#include "vtkApertureRaySampler.h"
 #include "vtkApertureRayScene.h"
 #include "vtkApertureSurface.h"
 #include "vtkEnvironmentMap.h"
@@ -37,49 +38,26 @@ vtkCxxSetObjectMacro(vtkApertureReference, Environment, vtkEnvironmentMap);
 namespace
 {
 constexpr double Pi = vtkMath::Pi();
-constexpr int Lanes = 16;
+constexpr int Lanes = vtkApertureRayPacket::Lanes;
 // Points handled between two progress events.
 constexpr vtkIdType Batch = 4096;
-
-// Radical inverse in base 2: the second Hammersley coordinate.
-double RadicalInverse(std::uint32_t i)
-{
-  i = (i << 16) | (i >> 16);
-  i = ((i & 0x55555555u) << 1) | ((i & 0xAAAAAAAAu) >> 1);
-  i = ((i & 0x33333333u) << 2) | ((i & 0xCCCCCCCCu) >> 2);
-  i = ((i & 0x0F0F0F0Fu) << 4) | ((i & 0xF0F0F0F0u) >> 4);
-  i = ((i & 0x00FF00FFu) << 8) | ((i & 0xFF00FF00u) >> 8);
-  return i * (1.0 / 4294967296.0);
-}
-
-// Two unit vectors completing a unit axis to an orthonormal frame.
-void Frame(const double a[3], double t[3], double b[3])
-{
-  const double helper[3] = { std::abs(a[0]) < 0.6 ? 1.0 : 0.0, std::abs(a[0]) < 0.6 ? 0.0 : 1.0,
-    0.0 };
-  vtkMath::Cross(a, helper, t);
-  vtkMath::Normalize(t);
-  vtkMath::Cross(a, t, b);
-}
 
 class Estimate
 {
 public:
-  Estimate(vtkApertureReference* self, const vtkApertureSurface& surface, RTCScene scene,
-    const double light[3], vtkEnvironmentMap* environment, float* irradiance, float* noise)
+  Estimate(vtkApertureReference* self, const vtkApertureSurface& surface,
+    const vtkApertureRayScene& scene, const vtkApertureRaySampler& sampler, const double light[3],
+    vtkEnvironmentMap* environment, float* irradiance, float* noise)
     : Surface(surface)
     , Scene(scene)
+    , Sampler(sampler)
     , Environment(environment)
     , Irradiance(irradiance)
     , Noise(noise)
   {
     std::copy(light, light + 3, this->Light);
     this->Source = self->GetSource();
-    this->Samples = self->GetNumberOfSamples();
-    this->Seed = static_cast<std::uint64_t>(static_cast<std::int64_t>(self->GetSeed()));
-    this->Offset = self->GetRayOffset();
-    const double r = self->GetLightRadius();
-    this->CosRadius = std::cos(r);
+    const double r = vtkSphericalCap::ClampLightRadius(self->GetLightRadius());
     // Cap solid angle over π sin² r: the light's radiance times the cap.
     this->LightScale =
       vtkSphericalCap::SolidAngleFromCapRadius(r) / (Pi * std::sin(r) * std::sin(r));
@@ -88,133 +66,101 @@ public:
 
   void operator()(vtkIdType begin, vtkIdType end) const
   {
-    vtkApertureRayScene::FlushToZero ftz;
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    alignas(64) RTCRay16 ray;
-    alignas(64) int valid[Lanes];
-    std::vector<double> weight(Lanes * 3);
+    vtkApertureRayPacket packet(this->Scene, this->Surface);
     for (vtkIdType id = begin; id < end; ++id)
     {
-      this->Point(id, context, ray, valid, weight);
+      this->Point(id, packet);
     }
   }
 
 private:
-  void Point(vtkIdType id, RTCIntersectContext& context, RTCRay16& ray, int* valid,
-    std::vector<double>& weight) const
+  void Point(vtkIdType id, vtkApertureRayPacket& packet) const
   {
     const int c = this->Components;
     float* out = this->Irradiance + c * id;
     float* spread = this->Noise + c * id;
-    if (!this->Surface.Valid[id] || !this->Surface.Receives[id])
+    if (!this->Surface.Valid[id])
     {
       std::fill(out, out + c, std::numeric_limits<float>::quiet_NaN());
       std::fill(spread, spread + c, std::numeric_limits<float>::quiet_NaN());
       return;
     }
-    const float* nf = this->Surface.GetNormal(id);
-    const double n[3] = { nf[0], nf[1], nf[2] };
+    const float* n = this->Surface.GetNormal(id);
     const bool light = this->Source == vtkApertureReference::LIGHT;
-    double axis[3], t[3], b[3];
-    std::copy(light ? this->Light : n, (light ? this->Light : n) + 3, axis);
-    Frame(axis, t, b);
-    // The point's Cranley-Patterson rotation.
-    const std::uint64_t h1 = vtkApertureHemisphereSampler::Mix(
-      this->Seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(id));
-    const std::uint64_t h2 = vtkApertureHemisphereSampler::Mix(h1);
-    const double shift = (h1 >> 11) * (1.0 / 9007199254740992.0);
-    const double turn = 2.0 * Pi * ((h2 >> 11) * (1.0 / 9007199254740992.0));
-    const float* p = &this->Surface.Points[3 * id];
-    const float lift = static_cast<float>(this->Offset * this->Surface.EdgeLength[id]);
+    const float axis[3] = { static_cast<float>(light ? this->Light[0] : n[0]),
+      static_cast<float>(light ? this->Light[1] : n[1]),
+      static_cast<float>(light ? this->Light[2] : n[2]) };
+    vtkApertureRaySampler::Point point;
+    this->Sampler.Begin(axis, this->Surface.Key[id], point);
+    const int samples = this->Sampler.GetNumberOfRays();
     double sum[3] = { 0, 0, 0 }, squares[3] = { 0, 0, 0 };
-    for (int first = 0; first < this->Samples; first += Lanes)
+    double weight[Lanes][3];
+    for (int first = 0; first < samples; first += Lanes)
     {
       for (int lane = 0; lane < Lanes; ++lane)
       {
-        const int i = first + lane;
-        valid[lane] = 0;
-        if (i >= this->Samples)
+        packet.Clear(lane);
+        if (first + lane >= samples)
         {
           continue;
         }
-        double u = (i + 0.5) / this->Samples + shift;
-        u -= std::floor(u);
-        const double phi = 2.0 * Pi * RadicalInverse(static_cast<std::uint32_t>(i)) + turn;
-        // Uniform over the light's cap, or cosine-weighted over the hemisphere.
-        const double cosTheta = light ? 1.0 - u * (1.0 - this->CosRadius) : std::sqrt(1.0 - u);
-        const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
-        double d[3];
-        for (int k = 0; k < 3; ++k)
-        {
-          d[k] = cosTheta * axis[k] + sinTheta * (std::cos(phi) * t[k] + std::sin(phi) * b[k]);
-        }
-        const double cosine = vtkMath::Dot(n, d);
+        float direction[3];
+        this->Sampler.Direction(point, first + lane, direction);
+        const double d[3] = { direction[0], direction[1], direction[2] };
+        const double cosine = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
         if (cosine <= 0.0)
         {
           continue; // below the horizon: contributes nothing
         }
-        double* w = &weight[3 * lane];
-        if (light)
-        {
-          w[0] = cosine * this->LightScale;
-        }
-        else if (this->Source == vtkApertureReference::SKY)
-        {
-          w[0] = 1.0;
-        }
-        else
-        {
-          this->Environment->Radiance(d, w);
-        }
-        valid[lane] = -1;
-        ray.org_x[lane] = p[0] + lift * nf[0];
-        ray.org_y[lane] = p[1] + lift * nf[1];
-        ray.org_z[lane] = p[2] + lift * nf[2];
-        ray.dir_x[lane] = static_cast<float>(d[0]);
-        ray.dir_y[lane] = static_cast<float>(d[1]);
-        ray.dir_z[lane] = static_cast<float>(d[2]);
-        ray.tnear[lane] = 0.0f;
-        ray.tfar[lane] = std::numeric_limits<float>::infinity();
-        ray.time[lane] = 0.0f;
-        ray.mask[lane] = 0xFFFFFFFF;
-        ray.id[lane] = 0;
-        ray.flags[lane] = 0;
+        this->Weight(d, cosine, weight[lane]);
+        packet.Set(lane, id, direction, std::numeric_limits<float>::infinity());
       }
-      rtcOccluded16(valid, this->Scene, &context, &ray);
+      packet.Trace();
       for (int lane = 0; lane < Lanes; ++lane)
       {
-        // Occluded rays come back with tfar = -inf.
-        if (valid[lane] && ray.tfar[lane] >= 0.0f)
+        for (int k = 0; k < c && packet.Visible(lane); ++k)
         {
-          for (int k = 0; k < c; ++k)
-          {
-            const double x = weight[3 * lane + k];
-            sum[k] += x;
-            squares[k] += x * x;
-          }
+          sum[k] += weight[lane][k];
+          squares[k] += weight[lane][k] * weight[lane][k];
         }
       }
     }
-    const double count = this->Samples;
     for (int k = 0; k < c; ++k)
     {
-      const double mean = sum[k] / count;
+      const double mean = sum[k] / samples;
       out[k] = static_cast<float>(mean);
       spread[k] =
-        static_cast<float>(std::sqrt(std::max(0.0, squares[k] / count - mean * mean) / count));
+        static_cast<float>(std::sqrt(std::max(0.0, squares[k] / samples - mean * mean) / samples));
+    }
+  }
+
+  // What a visible sample in direction d adds: the light's radiance times the cosine (samples
+  // uniform over its cap), or the sky's or environment's radiance (cosine-weighted samples).
+  void Weight(const double d[3], double cosine, double w[3]) const
+  {
+    if (this->Source == vtkApertureReference::LIGHT)
+    {
+      w[0] = cosine * this->LightScale;
+    }
+    else if (this->Source == vtkApertureReference::SKY)
+    {
+      w[0] = 1.0;
+    }
+    else
+    {
+      this->Environment->Radiance(d, w);
     }
   }
 
   const vtkApertureSurface& Surface;
-  RTCScene Scene;
+  const vtkApertureRayScene& Scene;
+  const vtkApertureRaySampler& Sampler;
   double Light[3];
   vtkEnvironmentMap* Environment;
   float* Irradiance;
   float* Noise;
-  int Source, Samples, Components;
-  std::uint64_t Seed;
-  double Offset, CosRadius, LightScale;
+  int Source, Components;
+  double LightScale;
 };
 }
 
@@ -306,7 +252,8 @@ int vtkApertureReference::RequestData(
   std::string error;
   vtkApertureSurface receivers;
   std::vector<vtkApertureSurface> occluderSurfaces;
-  if (!vtkApertureSurface::SetScene(input, occluders, receivers, occluderSurfaces, error))
+  if (!vtkApertureSurface::SetScene(
+        input, occluders, this->FeatureAngle, this->RayOffset, receivers, occluderSurfaces, error))
   {
     vtkErrorMacro(<< error);
     return 0;
@@ -320,14 +267,7 @@ int vtkApertureReference::RequestData(
 
   const vtkIdType n = receivers.GetNumberOfPoints();
   const int components = this->Source == ENVIRONMENT ? 3 : 1;
-  vtkNew<vtkFloatArray> irradiance;
-  irradiance->SetName(this->IrradianceArrayName);
-  irradiance->SetNumberOfComponents(components);
-  irradiance->SetNumberOfTuples(n);
-  vtkNew<vtkFloatArray> noise;
-  noise->SetName(this->NoiseArrayName);
-  noise->SetNumberOfComponents(components);
-  noise->SetNumberOfTuples(n);
+  std::vector<float> irradiance(components * n), noise(components * n);
   if (this->Source == ENVIRONMENT)
   {
     // Looking one direction up builds the environment's working image before threads share it.
@@ -335,13 +275,18 @@ int vtkApertureReference::RequestData(
     const double up[3] = { 0.0, 0.0, 1.0 };
     this->Environment->Radiance(up, probe);
   }
-  const Estimate estimate(this, receivers, scene.GetScene(), light, this->Environment,
-    irradiance->GetPointer(0), noise->GetPointer(0));
+  const vtkApertureRaySampler sampler(this->NumberOfSamples, this->Seed, false,
+    this->Source == LIGHT ? vtkApertureRaySampler::UNIFORM_CAP
+                          : vtkApertureRaySampler::COSINE_HEMISPHERE,
+    vtkSphericalCap::ClampLightRadius(this->LightRadius));
+  const Estimate estimate(
+    this, receivers, scene, sampler, light, this->Environment, irradiance.data(), noise.data());
   this->UpdateProgress(0.0);
   for (vtkIdType first = 0; first < n; first += Batch)
   {
     vtkSMPTools::For(first, std::min(n, first + Batch), 64, estimate);
-    this->UpdateProgress(static_cast<double>(std::min(n, first + Batch)) / n);
+    this->UpdateProgress(
+      static_cast<double>(std::min(n, first + Batch)) / std::max<vtkIdType>(n, 1));
     if (this->GetAbortExecute())
     {
       output->Initialize();
@@ -355,14 +300,23 @@ int vtkApertureReference::RequestData(
     return 0;
   }
 
-  output->ShallowCopy(input);
+  // Per output point (split at creases): NaN where there is no estimate.
+  std::vector<vtkIdType> points;
+  receivers.MakeOutput(input, output, points);
   vtkPointData* pd = output->GetPointData();
+  const float nan[3] = { std::numeric_limits<float>::quiet_NaN(),
+    std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::quiet_NaN() };
+  const float zero[3] = { 0.0f, 0.0f, 0.0f };
   if (receivers.NormalsComputed)
   {
-    pd->SetNormals(receivers.Normals);
+    const float* normals = receivers.GetNormal(0);
+    pd->SetNormals(
+      vtkApertureSurface::Scatter("Normals", 3, normals, normals + 3 * n, points, zero, zero));
   }
-  pd->AddArray(irradiance);
-  pd->AddArray(noise);
+  pd->AddArray(vtkApertureSurface::Scatter(this->IrradianceArrayName, components, irradiance.data(),
+    irradiance.data() + irradiance.size(), points, nan, nan));
+  pd->AddArray(vtkApertureSurface::Scatter(
+    this->NoiseArrayName, components, noise.data(), noise.data() + noise.size(), points, nan, nan));
   return 1;
 }
 
@@ -379,6 +333,7 @@ void vtkApertureReference::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfSamples: " << this->NumberOfSamples << "\n";
   os << indent << "Seed: " << this->Seed << "\n";
   os << indent << "RayOffset: " << this->RayOffset << "\n";
+  os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
   os << indent << "IrradianceArrayName: "
      << (this->IrradianceArrayName ? this->IrradianceArrayName : "(none)") << "\n";
   os << indent << "NoiseArrayName: " << (this->NoiseArrayName ? this->NoiseArrayName : "(none)")

@@ -34,10 +34,12 @@
  * environment) and `ReferenceNoise`, the standard error of each estimate computed from its
  * samples as if they were independent (the stratified sets do better, so it is an upper bound).
  * Points that are not finite, have no normal or belong to no polygon get NaN. `Normals` are added
- * when the input had none, computed as vtkAperturePrecompute computes them.
+ * when the input had none. The surface is taken as vtkAperturePrecompute takes it (welded, split
+ * at creases, with its contact and self-hit rules and its ray offsets), so that the two can be
+ * compared point by point; the output splits points the same way.
  *
- * Each point's samples depend only on Seed and its id (a per-point Cranley-Patterson rotation
- * of a Hammersley set), so results do not depend on the number of threads.
+ * Each point's samples depend only on Seed and its position (a per-point Cranley-Patterson
+ * rotation of a Hammersley set), so results do not depend on the number of threads.
  *
  * @sa vtkAperturePrecompute vtkSphericalCap vtkOcclusionQueryVisibility
  */
@@ -126,6 +128,15 @@ public:
 
   ///@{
   /**
+   * Creases split normals and estimates above this angle (degrees), as in
+   * vtkAperturePrecompute. Default 60.
+   */
+  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
+  vtkGetMacro(FeatureAngle, double);
+  ///@}
+
+  ///@{
+  /**
    * Names of the output arrays. Defaults `ReferenceIrradiance` and `ReferenceNoise`.
    */
   vtkSetStringMacro(IrradianceArrayName);
@@ -154,6 +165,7 @@ protected:
   int NumberOfSamples = 1024;
   int Seed = 0;
   double RayOffset = 0.001;
+  double FeatureAngle = 60.0;
   char* IrradianceArrayName = nullptr;
   char* NoiseArrayName = nullptr;
 

@@ -11,6 +11,7 @@
 #include "vtkApertureLightingMapper.h"
 
 #include "vtkActor.h"
+#include "vtkApertureCellCheck.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkMatrix3x3.h"
@@ -37,9 +38,33 @@ enum StateBits
 }
 
 //------------------------------------------------------------------------------
+bool vtkApertureLightingMapper::CheckCells(vtkPolyData* input)
+{
+  if (!input)
+  {
+    return true;
+  }
+  if (input->GetMTime() != this->CheckedCellsTime)
+  {
+    this->CheckedCellsTime = input->GetMTime();
+    const std::string problem = vtkApertureCellCheck::FindBadCell(input);
+    this->CellsGood = problem.empty();
+    if (!this->CellsGood)
+    {
+      vtkErrorMacro("Cannot draw the input: " << problem << ".");
+    }
+  }
+  return this->CellsGood;
+}
+
+//------------------------------------------------------------------------------
 void vtkApertureLightingMapper::RenderPiece(vtkRenderer* renderer, vtkActor* actor)
 {
   vtkPolyData* input = this->GetInput();
+  if (!this->CheckCells(input))
+  {
+    return;
+  }
   int state = 0;
   if (input && this->Lighting->GetShadingMode() != vtkApertureLightingInterface::STANDARD)
   {

@@ -168,6 +168,12 @@ private:
   // Maps the aperture arrays (or texture coordinates) to vertex attributes when they change.
   void MapApertureAttributes(vtkPolyData* input);
 
+  // Whether the input's cells name only its points (checked when the input changes): VTK's
+  // buffer code reads through them unchecked.
+  bool CheckCells(vtkPolyData* input);
+  vtkMTimeType CheckedCellsTime = 0;
+  bool CellsGood = false;
+
   // What this render shades with; a change rebuilds the shaders.
   int State = 0;
   std::map<const vtkOpenGLHelper*, int> ShaderState;

@@ -10,6 +10,11 @@
 =========================================================================*/
 #include "vtkCompositeApertureLightingMapper.h"
 
+#include "vtkApertureCellCheck.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkPolyData.h"
+
 #include "vtkApertureLightingInterface.h"
 #include "vtkCompositeApertureLightingMapperHelper.h"
 #include "vtkObjectFactory.h"
@@ -26,6 +31,49 @@ vtkCompositeApertureLightingMapper::~vtkCompositeApertureLightingMapper() = defa
 vtkApertureLightingInterface* vtkCompositeApertureLightingMapper::GetApertureLighting()
 {
   return this->Lighting;
+}
+
+//------------------------------------------------------------------------------
+bool vtkCompositeApertureLightingMapper::CheckCells()
+{
+  vtkDataObject* input = this->GetInputDataObject(0, 0);
+  if (!input || input->GetMTime() == this->CheckedCellsTime)
+  {
+    return !input || this->CellsGood;
+  }
+  this->CheckedCellsTime = input->GetMTime();
+  this->CellsGood = true;
+  auto check = [this](vtkPolyData* block, unsigned int index)
+  {
+    const std::string problem = block ? vtkApertureCellCheck::FindBadCell(block) : std::string();
+    if (!problem.empty())
+    {
+      vtkErrorMacro("Cannot draw block " << index << ": " << problem << ".");
+      this->CellsGood = false;
+    }
+  };
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
+  {
+    auto it = vtk::TakeSmartPointer(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal() && this->CellsGood; it->GoToNextItem())
+    {
+      check(vtkPolyData::SafeDownCast(it->GetCurrentDataObject()), it->GetCurrentFlatIndex());
+    }
+  }
+  else
+  {
+    check(vtkPolyData::SafeDownCast(input), 0);
+  }
+  return this->CellsGood;
+}
+
+//------------------------------------------------------------------------------
+void vtkCompositeApertureLightingMapper::Render(vtkRenderer* renderer, vtkActor* actor)
+{
+  if (this->CheckCells())
+  {
+    this->Superclass::Render(renderer, actor);
+  }
 }
 
 //------------------------------------------------------------------------------

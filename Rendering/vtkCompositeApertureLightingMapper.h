@@ -46,6 +46,12 @@ public:
    */
   vtkApertureLightingInterface* GetApertureLighting();
 
+  /**
+   * Draws nothing, with an error naming the block, when a block's cells use point ids outside
+   * its points (VTK's buffer code reads through them unchecked).
+   */
+  void Render(vtkRenderer* renderer, vtkActor* actor) override;
+
 protected:
   vtkCompositeApertureLightingMapper();
   ~vtkCompositeApertureLightingMapper() override;
@@ -56,6 +62,11 @@ protected:
   vtkNew<vtkApertureLightingInterface> Lighting;
 
 private:
+  // Whether every block's cells name only its points (checked when the input changes).
+  bool CheckCells();
+  vtkMTimeType CheckedCellsTime = 0;
+  bool CellsGood = false;
+
   vtkCompositeApertureLightingMapper(const vtkCompositeApertureLightingMapper&) = delete;
   void operator=(const vtkCompositeApertureLightingMapper&) = delete;
 };

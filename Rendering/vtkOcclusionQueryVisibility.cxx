@@ -11,9 +11,10 @@
 #include "vtkOcclusionQueryVisibility.h"
 
 #include "vtkApertureDisplay.h"
-#include "vtkApertureRayScene.h"
 #include "vtkApertureSurface.h"
 #include "vtkLightSphere.h"
+#include "vtkMortonOrder.h"
+#include "vtkRayCastVisibility.h"
 #include "vtkVisibilityRenderer.h"
 
 #include "vtkBitArray.h"
@@ -55,132 +56,6 @@ using Bits = vtkVisibilityRenderer::Bits;
 // Directions handled between two progress events.
 constexpr size_t Chunk = 8;
 
-// Casts, for blocks of 64 points (so that no two threads share a word of the bit sets), one
-// occlusion ray per point and direction, 16 points to a packet. The points cast for are those of
-// `order` (neighbours together, so that a packet's rays stay coherent), their bits set at their
-// place in that order.
-class CastDirections
-{
-public:
-  CastDirections(const vtkApertureSurface& surface, const std::vector<vtkIdType>& order,
-    RTCScene scene, const Directions& directions, double offset, std::vector<Bits>& visible)
-    : Surface(surface)
-    , Order(order)
-    , Scene(scene)
-    , Dirs(directions)
-    , Offset(offset)
-    , Visible(visible)
-  {
-  }
-
-  void operator()(vtkIdType beginBlock, vtkIdType endBlock) const
-  {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    // A packet is 16 neighbouring points looking the same way.
-    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-    alignas(64) RTCRay16 ray;
-    alignas(64) int valid[16];
-    const vtkIdType n = static_cast<vtkIdType>(this->Order.size());
-    for (vtkIdType block = beginBlock; block < endBlock; ++block)
-    {
-      for (size_t j = 0; j < this->Dirs.size(); ++j)
-      {
-        const auto& l = this->Dirs[j];
-        std::uint64_t word = 0;
-        for (vtkIdType first = 64 * block; first < std::min(n, 64 * block + 64); first += 16)
-        {
-          for (int lane = 0; lane < 16; ++lane)
-          {
-            const vtkIdType id = first + lane < n ? this->Order[first + lane] : -1;
-            // Directions below a point's tangent plane are hidden by its own surface.
-            const float* normal = id >= 0 ? this->Surface.GetNormal(id) : nullptr;
-            valid[lane] = id >= 0 && this->Surface.Valid[id] &&
-                normal[0] * l[0] + normal[1] * l[1] + normal[2] * l[2] > 0.0
-              ? -1
-              : 0;
-            if (!valid[lane])
-            {
-              continue;
-            }
-            const float* p = &this->Surface.Points[3 * id];
-            const float lift = static_cast<float>(this->Offset * this->Surface.EdgeLength[id]);
-            ray.org_x[lane] = p[0] + lift * normal[0];
-            ray.org_y[lane] = p[1] + lift * normal[1];
-            ray.org_z[lane] = p[2] + lift * normal[2];
-            ray.dir_x[lane] = static_cast<float>(l[0]);
-            ray.dir_y[lane] = static_cast<float>(l[1]);
-            ray.dir_z[lane] = static_cast<float>(l[2]);
-            ray.tnear[lane] = 0.0f;
-            ray.tfar[lane] = std::numeric_limits<float>::infinity();
-            ray.time[lane] = 0.0f;
-            ray.mask[lane] = 0xFFFFFFFF;
-            ray.id[lane] = 0;
-            ray.flags[lane] = 0;
-          }
-          rtcOccluded16(valid, this->Scene, &context, &ray);
-          for (int lane = 0; lane < 16; ++lane)
-          {
-            // Occluded rays come back with tfar = -inf.
-            if (valid[lane] && ray.tfar[lane] >= 0.0f)
-            {
-              word |= std::uint64_t(1) << ((first + lane) % 64);
-            }
-          }
-        }
-        this->Visible[j][block] = word;
-      }
-    }
-  }
-
-private:
-  const vtkApertureSurface& Surface;
-  const std::vector<vtkIdType>& Order;
-  RTCScene Scene;
-  const Directions& Dirs;
-  double Offset;
-  std::vector<Bits>& Visible;
-};
-
-// Morton (Z-order) codes of positions (3 floats each, `count` of them) within the bounds of the
-// finite `points`: sorting by them puts neighbours together.
-std::vector<std::uint32_t> MortonCodes(
-  const std::vector<float>& points, const float* positions, size_t count)
-{
-  float lo[3] = { FLT_MAX, FLT_MAX, FLT_MAX }, hi[3] = { -FLT_MAX, -FLT_MAX, -FLT_MAX };
-  for (size_t p = 0; p + 2 < points.size(); p += 3)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      if (std::isfinite(points[p + c]))
-      {
-        lo[c] = std::min(lo[c], points[p + c]);
-        hi[c] = std::max(hi[c], points[p + c]);
-      }
-    }
-  }
-  // Spreads 10 bits to every third bit.
-  auto spread = [](std::uint32_t v)
-  {
-    v = (v | (v << 16)) & 0x030000FF;
-    v = (v | (v << 8)) & 0x0300F00F;
-    v = (v | (v << 4)) & 0x030C30C3;
-    return (v | (v << 2)) & 0x09249249;
-  };
-  std::vector<std::uint32_t> codes(count, 0);
-  for (size_t i = 0; i < count; ++i)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      const float x = positions[3 * i + c];
-      const float unit = hi[c] > lo[c] && std::isfinite(x) ? (x - lo[c]) / (hi[c] - lo[c]) : 0.0f;
-      codes[i] |= spread(static_cast<std::uint32_t>(std::min(std::max(unit, 0.0f), 1.0f) * 1023.0f))
-        << c;
-    }
-  }
-  return codes;
-}
-
 // Orders triangles along a Morton curve of their centroids: any order gives the same depth, and
 // neighbours drawn together share vertices and screen tiles, which makes a software rasteriser
 // (llvmpipe) 1.5 times as fast on scanned meshes stored in no particular order.
@@ -198,7 +73,9 @@ void SortTriangles(const std::vector<float>& points, std::vector<std::uint32_t>&
         3.0f;
     }
   }
-  const std::vector<std::uint32_t> codes = MortonCodes(points, centroids.data(), count);
+  float lo[3], hi[3];
+  vtkMortonOrder::Bounds(points.data(), points.size() / 3, lo, hi);
+  const std::vector<std::uint32_t> codes = vtkMortonOrder::Codes(centroids.data(), count, lo, hi);
   std::vector<std::pair<std::uint32_t, std::uint32_t>> keys(count);
   for (size_t t = 0; t < count; ++t)
   {
@@ -227,9 +104,12 @@ public:
   std::vector<vtkMTimeType> Key;
   vtkApertureSurface Receivers;
   std::vector<vtkApertureSurface> Occluders;
-  // The scene for OpenGL (receivers' points first, triangles in Morton order), built on demand.
+  // The scene for OpenGL, built on demand: the receiving points first (the points tested), then
+  // the vertices of the receivers (from ReceiverVertices on) and the occluders; triangles in
+  // Morton order.
   bool SceneBuilt = false;
   std::vector<float> Points;
+  std::uint32_t ReceiverVertices = 0;
   std::vector<std::uint32_t> Triangles;
   std::vector<std::uint32_t> UnsortedTriangles;
   double Radius = 1.0;
@@ -244,7 +124,7 @@ public:
   std::vector<std::uint32_t> Unseen;
   std::vector<unsigned char> Seen;
   bool Filtering = false;
-  std::unique_ptr<vtkApertureRayScene> RayScene;
+  vtkRayCastVisibility RayCast;
   vtkWeakPointer<vtkRenderer> ViewRenderer;
   vtkWeakPointer<vtkProp3D> ViewProp;
   std::unique_ptr<vtkVisibilityRenderer> Renderer;
@@ -412,41 +292,7 @@ bool vtkOcclusionQueryVisibility::PrepareOpenGL(bool needStorage, std::string& e
   }
   if (!in.SceneBuilt)
   {
-    // Receivers first, then the occluders' points and triangles. (A surface's Points hold 3
-    // floats per point and one of padding for Embree at the end.)
-    const vtkIdType n = in.Receivers.GetNumberOfPoints();
-    in.Points.assign(in.Receivers.Points.begin(), in.Receivers.Points.begin() + 3 * n);
-    std::vector<std::uint32_t> triangles = in.Receivers.Triangles;
-    for (const auto& s : in.Occluders)
-    {
-      const auto base = static_cast<std::uint32_t>(in.Points.size() / 3);
-      in.Points.insert(
-        in.Points.end(), s.Points.begin(), s.Points.begin() + 3 * s.GetNumberOfPoints());
-      for (std::uint32_t id : s.Triangles)
-      {
-        triangles.push_back(base + id);
-      }
-    }
-    // A deforming mesh keeps its triangles, and their order: they are not uploaded again.
-    if (triangles != in.UnsortedTriangles)
-    {
-      in.UnsortedTriangles = triangles;
-      SortTriangles(in.Points, triangles);
-      in.Triangles.swap(triangles);
-    }
-    double radius = 0.0;
-    for (size_t p = 0; p < in.Points.size(); p += 3)
-    {
-      const double r2 = double(in.Points[p]) * in.Points[p] +
-        double(in.Points[p + 1]) * in.Points[p + 1] + double(in.Points[p + 2]) * in.Points[p + 2];
-      if (std::isfinite(r2))
-      {
-        radius = std::max(radius, std::sqrt(r2));
-      }
-    }
-    // A margin so that nothing touches the near and far planes.
-    in.Radius = radius > 0.0 ? 1.01 * radius : 1.0;
-    in.SceneBuilt = true;
+    this->BuildOpenGLScene();
   }
   if (!in.Renderer)
   {
@@ -462,6 +308,64 @@ bool vtkOcclusionQueryVisibility::PrepareOpenGL(bool needStorage, std::string& e
   this->UploadedBytes = in.Renderer->GetUploadedBytes();
   in.Uploaded = true;
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOcclusionQueryVisibility::BuildOpenGLScene()
+{
+  vtkInternals& in = *this->Internals;
+  const vtkApertureSurface& receivers = in.Receivers;
+  const vtkIdType n = receivers.GetNumberOfPoints();
+  // The points tested come first: the receivers' vertices themselves when they are one per
+  // vertex (nothing welded, nothing split), else copies of the receiving points' positions.
+  bool oneToOne = n == receivers.GetNumberOfVertices();
+  for (vtkIdType i = 0; i < n && oneToOne; ++i)
+  {
+    oneToOne = receivers.PointVertex[i] == static_cast<std::uint32_t>(i);
+  }
+  in.Points.clear();
+  for (vtkIdType i = 0; i < n && !oneToOne; ++i)
+  {
+    in.Points.insert(in.Points.end(), receivers.GetPosition(i), receivers.GetPosition(i) + 3);
+  }
+  in.ReceiverVertices = static_cast<std::uint32_t>(in.Points.size() / 3);
+  std::vector<std::uint32_t> triangles;
+  auto add = [&](const vtkApertureSurface& s)
+  {
+    // A surface's Vertices hold 3 floats per vertex and one of padding at the end.
+    const auto base = static_cast<std::uint32_t>(in.Points.size() / 3);
+    in.Points.insert(
+      in.Points.end(), s.Vertices.begin(), s.Vertices.begin() + 3 * s.GetNumberOfVertices());
+    for (std::uint32_t id : s.Triangles)
+    {
+      triangles.push_back(base + id);
+    }
+  };
+  add(receivers);
+  for (const auto& s : in.Occluders)
+  {
+    add(s);
+  }
+  // A deforming mesh keeps its triangles, and their order: they are not uploaded again.
+  if (triangles != in.UnsortedTriangles)
+  {
+    in.UnsortedTriangles = triangles;
+    SortTriangles(in.Points, triangles);
+    in.Triangles.swap(triangles);
+  }
+  double radius = 0.0;
+  for (size_t p = 0; p < in.Points.size(); p += 3)
+  {
+    const double r2 = double(in.Points[p]) * in.Points[p] +
+      double(in.Points[p + 1]) * in.Points[p + 1] + double(in.Points[p + 2]) * in.Points[p + 2];
+    if (std::isfinite(r2))
+    {
+      radius = std::max(radius, std::sqrt(r2));
+    }
+  }
+  // A margin so that nothing touches the near and far planes.
+  in.Radius = radius > 0.0 ? 1.01 * radius : 1.0;
+  in.SceneBuilt = true;
 }
 
 //------------------------------------------------------------------------------
@@ -540,12 +444,17 @@ bool vtkOcclusionQueryVisibility::UpdateSeen(std::string& error)
     }
   }
 
+  // The unseen triangles, as the OpenGL scene numbers their vertices.
   const std::vector<std::uint32_t>& triangles = in.Receivers.Triangles;
+  const std::uint32_t base = in.ReceiverVertices;
   std::vector<std::uint32_t> candidates;
   candidates.reserve(3 * in.Unseen.size());
   for (std::uint32_t t : in.Unseen)
   {
-    candidates.insert(candidates.end(), &triangles[3 * size_t(t)], &triangles[3 * size_t(t) + 3]);
+    for (int c = 0; c < 3; ++c)
+    {
+      candidates.push_back(base + triangles[3 * size_t(t) + c]);
+    }
   }
   std::vector<char> seen;
   if (!in.Renderer->ViewVisible(matrix, width, height, candidates, queries, seen, error))
@@ -570,13 +479,280 @@ bool vtkOcclusionQueryVisibility::UpdateSeen(std::string& error)
     {
       for (int c = 0; c < 3; ++c)
       {
-        in.Seen[triangles[3 * size_t(in.Unseen[i]) + c]] = 1;
+        in.Seen[in.Receivers.CornerPoints[3 * size_t(in.Unseen[i]) + c]] = 1;
       }
     }
   }
   in.Unseen = stop ? std::vector<std::uint32_t>() : unseen;
   in.Filtering = !stop;
   return true;
+}
+
+//------------------------------------------------------------------------------
+// Visibility computed before for the same geometry and settings is kept: a higher level adds its
+// new directions, filtering adds the points it has newly seen.
+bool vtkOcclusionQueryVisibility::UpdateCache(
+  vtkPolyData* input, const std::vector<vtkPolyData*>& occluders, std::string& error)
+{
+  vtkInternals& in = *this->Internals;
+  auto bitsOf = [](double value)
+  {
+    vtkMTimeType bits = 0;
+    std::memcpy(&bits, &value, std::min(sizeof(bits), sizeof(value)));
+    return bits;
+  };
+  std::vector<vtkMTimeType> key = { input->GetMTime(), static_cast<vtkMTimeType>(this->Backend),
+    static_cast<vtkMTimeType>(this->DepthResolution), bitsOf(this->PolygonOffsetFactor),
+    bitsOf(this->PolygonOffsetUnits), bitsOf(this->RayOffset), bitsOf(this->FeatureAngle),
+    static_cast<vtkMTimeType>(this->VertexFiltering) };
+  for (vtkPolyData* occluder : occluders)
+  {
+    key.push_back(occluder->GetMTime());
+  }
+  if (key == in.Key)
+  {
+    return true;
+  }
+  in.Key.clear();
+  if (!vtkApertureSurface::SetScene(
+        input, occluders, this->FeatureAngle, this->RayOffset, in.Receivers, in.Occluders, error))
+  {
+    return false;
+  }
+  const vtkIdType n = in.Receivers.GetNumberOfPoints();
+  in.SceneBuilt = false;
+  in.RayCast.ReleaseScene();
+  in.Computed.clear();
+  in.Directions.assign(n, 0);
+  // Without filtering every point is needed; with it, those of triangles not seen yet are not.
+  in.Seen.assign(n, 1);
+  in.Unseen.clear();
+  in.Filtering = this->VertexFiltering;
+  if (in.Filtering)
+  {
+    const vtkIdType triangles = in.Receivers.GetNumberOfTriangles();
+    in.Unseen.resize(triangles);
+    for (vtkIdType t = 0; t < triangles; ++t)
+    {
+      in.Unseen[t] = static_cast<std::uint32_t>(t);
+    }
+    for (const std::uint32_t point : in.Receivers.CornerPoints)
+    {
+      in.Seen[point] = 0;
+    }
+  }
+  in.Key = key;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Gives every point that needs them the directions of the level it lacks, by the backend.
+bool vtkOcclusionQueryVisibility::ComputeMissing(
+  const std::vector<std::array<double, 3>>& directions, bool& aborted, std::string& error)
+{
+  vtkInternals& in = *this->Internals;
+  const vtkIdType n = in.Receivers.GetNumberOfPoints();
+  const int k = static_cast<int>(directions.size());
+  if (in.Computed.size() < directions.size())
+  {
+    in.Computed.resize(k, Bits((n + 63) / 64, 0));
+  }
+  // The points that need directions, and the first direction one of them lacks.
+  std::vector<std::uint32_t> todo;
+  int first = k;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (in.Seen[i] && in.Directions[i] < k)
+    {
+      todo.push_back(static_cast<std::uint32_t>(i));
+      first = std::min(first, in.Directions[i]);
+    }
+  }
+  aborted = false;
+  if (todo.empty())
+  {
+    return true;
+  }
+  const Directions missing(directions.begin() + first, directions.end());
+  auto progress = [&](size_t done)
+  {
+    this->UpdateProgress(static_cast<double>(done) / missing.size());
+    return !this->GetAbortExecute();
+  };
+  std::vector<Bits> fresh;
+  bool ok = this->Backend == RAY_CAST ? this->CastRays(missing, todo, fresh, progress, error)
+                                      : this->RenderOpenGL(missing, todo, fresh, progress, error);
+  aborted = this->GetAbortExecute() != 0;
+  if (!ok || aborted)
+  {
+    return aborted;
+  }
+  // New bits are or-ed in: a point given a direction again gets the same bit.
+  for (size_t j = 0; j < fresh.size(); ++j)
+  {
+    Bits& bits = in.Computed[first + j];
+    for (size_t w = 0; w < bits.size(); ++w)
+    {
+      bits[w] |= fresh[j][w];
+    }
+  }
+  for (std::uint32_t i : todo)
+  {
+    in.Directions[i] = k;
+  }
+  this->NumberOfComputedPoints = static_cast<vtkIdType>(todo.size());
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOcclusionQueryVisibility::CastRays(const std::vector<std::array<double, 3>>& directions,
+  const std::vector<std::uint32_t>& points, std::vector<Bits>& visible,
+  const std::function<bool(size_t)>& progress, std::string& error)
+{
+  vtkInternals& in = *this->Internals;
+  // The Embree scene lasts as long as the geometry: filtering's later updates reuse it.
+  if (!in.RayCast.HasScene() && !in.RayCast.SetScene(in.Receivers, in.Occluders, error))
+  {
+    return false;
+  }
+  auto counted = [&](size_t done)
+  {
+    this->NumberOfDepthPasses = static_cast<int>(done);
+    return progress(done);
+  };
+  return in.RayCast.Cast(directions, points, visible, counted, error);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOcclusionQueryVisibility::RenderOpenGL(const std::vector<std::array<double, 3>>& directions,
+  const std::vector<std::uint32_t>& points, std::vector<Bits>& visible,
+  const std::function<bool(size_t)>& progress, std::string& error)
+{
+  vtkInternals& in = *this->Internals;
+  if (!this->PrepareOpenGL(this->Backend == DEPTH_COMPARE, error))
+  {
+    error += " SetBackendToRayCast() needs no OpenGL.";
+    return false;
+  }
+  const std::vector<std::uint32_t>* subset =
+    static_cast<vtkIdType>(points.size()) == in.Receivers.GetNumberOfPoints() ? nullptr : &points;
+  bool ok = true;
+  if (this->Backend == DEPTH_COMPARE)
+  {
+    // All directions at once, so that each can be paired with its opposite.
+    ok = in.Renderer->DepthCompare(directions, visible, error, progress, subset);
+  }
+  for (size_t begin = 0; ok && this->Backend == OCCLUSION_QUERY && begin < directions.size();
+       begin += Chunk)
+  {
+    const Directions chunk(
+      directions.begin() + begin, directions.begin() + std::min(directions.size(), begin + Chunk));
+    std::vector<Bits> bits;
+    ok = in.Renderer->OcclusionQuery(chunk, bits, error, subset);
+    visible.insert(visible.end(), bits.begin(), bits.end());
+    ok = ok && progress(begin + chunk.size());
+  }
+  // SetScene() in this update started the count.
+  this->NumberOfDepthPasses = in.Renderer->GetNumberOfDepthPasses();
+  if (!ok && !this->GetAbortExecute())
+  {
+    error = "OpenGL failed: " + error + ".";
+  }
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+// The output: the input's points (split where creases split them) with the arrays, and the
+// lightsphere in the field data.
+void vtkOcclusionQueryVisibility::WriteOutputs(vtkPolyData* input, vtkPolyData* output,
+  vtkLightSphere* sphere, const std::vector<std::array<double, 3>>& directions)
+{
+  vtkInternals& in = *this->Internals;
+  const vtkApertureSurface& receivers = in.Receivers;
+  const int k = static_cast<int>(directions.size());
+  std::vector<vtkIdType> points;
+  receivers.MakeOutput(input, output, points);
+  const vtkIdType m = static_cast<vtkIdType>(points.size());
+  vtkPointData* pd = output->GetPointData();
+  if (receivers.NormalsComputed)
+  {
+    const float* normals = receivers.GetNormal(0);
+    const float zero[3] = { 0.0f, 0.0f, 0.0f };
+    pd->SetNormals(vtkApertureSurface::Scatter(
+      "Normals", 3, normals, normals + 3 * receivers.GetNumberOfPoints(), points, zero, zero));
+  }
+  // Output point o sees direction j when its receiving point is above its tangent plane and has
+  // its bit set.
+  auto sees = [&](vtkIdType o, int j, double& cosine)
+  {
+    const vtkIdType i = points[o];
+    if (i < 0 || !receivers.Valid[i] || j >= in.Directions[i])
+    {
+      return false;
+    }
+    const float* normal = receivers.GetNormal(i);
+    cosine =
+      normal[0] * directions[j][0] + normal[1] * directions[j][1] + normal[2] * directions[j][2];
+    return cosine > 0.0 && Bit(in.Computed[j], i);
+  };
+  if (this->ComputeVisibility)
+  {
+    vtkNew<vtkFloatArray> visibility;
+    visibility->SetName("Visibility");
+    visibility->SetNumberOfComponents(k);
+    visibility->SetNumberOfTuples(m);
+    float* values = visibility->GetPointer(0);
+    vtkSMPTools::For(0, m,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType o = begin; o < end; ++o)
+        {
+          for (int j = 0; j < k; ++j)
+          {
+            double c = 0.0;
+            values[o * k + j] = sees(o, j, c) ? static_cast<float>(c) : 0.0f;
+          }
+        }
+      });
+    pd->AddArray(visibility);
+  }
+  if (this->ComputeVisibilityBits)
+  {
+    vtkNew<vtkBitArray> bits;
+    bits->SetName("VisibilityBits");
+    bits->SetNumberOfComponents(k);
+    bits->SetNumberOfTuples(m);
+    for (vtkIdType o = 0; o < m; ++o)
+    {
+      for (int j = 0; j < k; ++j)
+      {
+        double c = 0.0;
+        bits->SetValue(o * k + j, sees(o, j, c));
+      }
+    }
+    pd->AddArray(bits);
+  }
+  if (this->VertexFiltering)
+  {
+    // Which points have their visibility yet: those of triangles not seen have none.
+    vtkNew<vtkUnsignedCharArray> done;
+    done->SetName("VisibilityComputed");
+    done->SetNumberOfTuples(m);
+    for (vtkIdType o = 0; o < m; ++o)
+    {
+      done->SetValue(o, points[o] >= 0 && in.Directions[points[o]] >= k ? 1 : 0);
+    }
+    pd->AddArray(done);
+  }
+  vtkSmartPointer<vtkDoubleArray> lightDirections;
+  lightDirections.TakeReference(sphere->NewDirections());
+  vtkSmartPointer<vtkDoubleArray> lightWeights;
+  lightWeights.TakeReference(sphere->NewWeights());
+  vtkNew<vtkFieldData> fields;
+  fields->ShallowCopy(input->GetFieldData());
+  fields->AddArray(lightDirections);
+  fields->AddArray(lightWeights);
+  output->SetFieldData(fields);
 }
 
 //------------------------------------------------------------------------------
@@ -609,311 +785,46 @@ int vtkOcclusionQueryVisibility::RequestData(
     }
   }
 
-  // Visibility computed before for the same geometry and settings is kept: a higher level adds
-  // its new directions, filtering adds the points it has newly seen.
-  auto bitsOf = [](double value)
-  {
-    vtkMTimeType bits = 0;
-    std::memcpy(&bits, &value, std::min(sizeof(bits), sizeof(value)));
-    return bits;
-  };
-  std::vector<vtkMTimeType> key = { input->GetMTime(), static_cast<vtkMTimeType>(this->Backend),
-    static_cast<vtkMTimeType>(this->DepthResolution), bitsOf(this->PolygonOffsetFactor),
-    bitsOf(this->PolygonOffsetUnits), bitsOf(this->RayOffset),
-    static_cast<vtkMTimeType>(this->VertexFiltering) };
-  for (vtkPolyData* occluder : occluders)
-  {
-    key.push_back(occluder->GetMTime());
-  }
+  // 1. The surfaces, and what is kept of earlier updates.
   std::string error;
-  if (key != in.Key)
+  if (!this->UpdateCache(input, occluders, error))
   {
-    in.Key.clear();
-    if (!vtkApertureSurface::SetScene(input, occluders, in.Receivers, in.Occluders, error))
-    {
-      vtkErrorMacro(<< error);
-      return 0;
-    }
-    const vtkIdType n = in.Receivers.GetNumberOfPoints();
-    in.SceneBuilt = false;
-    in.RayScene.reset();
-    in.Computed.clear();
-    in.Directions.assign(n, 0);
-    // Without filtering every point is needed; with it, those of triangles not seen yet are not.
-    in.Seen.assign(n, 1);
-    in.Unseen.clear();
-    in.Filtering = this->VertexFiltering;
-    if (in.Filtering)
-    {
-      const vtkIdType triangles = in.Receivers.GetNumberOfTriangles();
-      in.Unseen.resize(triangles);
-      for (vtkIdType t = 0; t < triangles; ++t)
-      {
-        in.Unseen[t] = static_cast<std::uint32_t>(t);
-        for (int c = 0; c < 3; ++c)
-        {
-          in.Seen[in.Receivers.Triangles[3 * t + c]] = 0;
-        }
-      }
-    }
-    in.Key = key;
+    vtkErrorMacro(<< error);
+    return 0;
   }
-  const vtkApertureSurface& receivers = in.Receivers;
-  const vtkIdType n = receivers.GetNumberOfPoints();
-
+  // 2. Vertex filtering: the points of the triangles the camera now sees.
   if (in.Filtering && !this->UpdateSeen(error))
   {
     vtkErrorMacro(<< error);
     in.Key.clear();
     return 0;
   }
-
+  // 3. The directions of the level that points lack, by the backend.
   vtkNew<vtkLightSphere> sphere;
   sphere->SetLevel(this->Level);
-  const int k = sphere->GetNumberOfDirections();
-  Directions directions(k);
-  for (int j = 0; j < k; ++j)
+  Directions directions(sphere->GetNumberOfDirections());
+  for (size_t j = 0; j < directions.size(); ++j)
   {
-    sphere->GetDirection(j, directions[j].data());
+    sphere->GetDirection(static_cast<int>(j), directions[j].data());
   }
-  if (in.Computed.size() < static_cast<size_t>(k))
-  {
-    in.Computed.resize(k, Bits((n + 63) / 64, 0));
-  }
-
-  // The points that need directions, and the first direction one of them lacks.
-  std::vector<std::uint32_t> todo;
-  int first = k;
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    if (in.Seen[i] && in.Directions[i] < k)
-    {
-      todo.push_back(static_cast<std::uint32_t>(i));
-      first = std::min(first, in.Directions[i]);
-    }
-  }
-  const Directions missing(directions.begin() + std::min(first, k), directions.end());
-  const std::vector<std::uint32_t>* subset =
-    static_cast<vtkIdType>(todo.size()) == n ? nullptr : &todo;
-  // New bits are or-ed in: a point given a direction again gets the same bit.
-  auto merge = [&](std::vector<Bits>& fresh, size_t offset)
-  {
-    for (size_t j = 0; j < fresh.size(); ++j)
-    {
-      Bits& bits = in.Computed[first + offset + j];
-      for (size_t w = 0; w < bits.size(); ++w)
-      {
-        bits[w] |= fresh[j][w];
-      }
-    }
-  };
-
   this->UpdateProgress(0.0);
   bool aborted = false;
-  if (!todo.empty() && this->Backend == RAY_CAST)
+  if (!this->ComputeMissing(directions, aborted, error))
   {
-    // The Embree scene lasts as long as the geometry: filtering's later updates reuse it.
-    if (!in.RayScene)
-    {
-      in.RayScene.reset(new vtkApertureRayScene);
-      if (!in.RayScene->Build(receivers, in.Occluders))
-      {
-        vtkErrorMacro("Embree failed: " << in.RayScene->GetError());
-        in.RayScene.reset();
-        return 0;
-      }
-    }
-    vtkApertureRayScene& scene = *in.RayScene;
-    const auto m = static_cast<vtkIdType>(todo.size());
-    const vtkIdType blocks = (m + 63) / 64;
-    // Points in Morton order, so that each packet's rays start close together.
-    std::vector<float> positions(3 * todo.size());
-    for (size_t i = 0; i < todo.size(); ++i)
-    {
-      std::copy_n(&receivers.Points[3 * todo[i]], 3, &positions[3 * i]);
-    }
-    const std::vector<std::uint32_t> codes =
-      MortonCodes(receivers.Points, positions.data(), todo.size());
-    std::vector<vtkIdType> rank(todo.size());
-    for (size_t i = 0; i < rank.size(); ++i)
-    {
-      rank[i] = static_cast<vtkIdType>(i);
-    }
-    std::sort(
-      rank.begin(), rank.end(), [&codes](vtkIdType a, vtkIdType b) { return codes[a] < codes[b]; });
-    std::vector<vtkIdType> order(todo.size());
-    for (size_t i = 0; i < order.size(); ++i)
-    {
-      order[i] = todo[rank[i]];
-    }
-    for (size_t begin = 0; begin < missing.size() && !aborted; begin += Chunk)
-    {
-      const Directions chunk(
-        missing.begin() + begin, missing.begin() + std::min(missing.size(), begin + Chunk));
-      std::vector<Bits> visible(chunk.size(), Bits(blocks, 0));
-      vtkSMPTools::For(0, blocks, 4,
-        CastDirections(receivers, order, scene.GetScene(), chunk, this->RayOffset, visible));
-      std::vector<Bits> fresh;
-      for (const Bits& ordered : visible)
-      {
-        Bits bits((n + 63) / 64, 0);
-        for (vtkIdType i = 0; i < m; ++i)
-        {
-          if (Bit(ordered, i))
-          {
-            bits[order[i] / 64] |= std::uint64_t(1) << (order[i] % 64);
-          }
-        }
-        fresh.push_back(std::move(bits));
-      }
-      merge(fresh, begin);
-      this->NumberOfDepthPasses += static_cast<int>(chunk.size());
-      this->UpdateProgress(static_cast<double>(begin + chunk.size()) / missing.size());
-      aborted = this->GetAbortExecute() != 0;
-    }
-    const std::string embreeError = scene.GetError();
-    if (!embreeError.empty())
-    {
-      vtkErrorMacro("Embree failed while tracing: " << embreeError);
-      in.Key.clear();
-      return 0;
-    }
-  }
-  else if (!todo.empty())
-  {
-    if (!this->PrepareOpenGL(this->Backend == DEPTH_COMPARE, error))
-    {
-      vtkErrorMacro(<< error << " SetBackendToRayCast() needs no OpenGL.");
-      in.Key.clear();
-      return 0;
-    }
-    bool ok = true;
-    if (this->Backend == DEPTH_COMPARE)
-    {
-      // All directions at once, so that each can be paired with its opposite.
-      std::vector<Bits> fresh;
-      ok = in.Renderer->DepthCompare(
-        missing, fresh, error,
-        [&](size_t done)
-        {
-          this->UpdateProgress(static_cast<double>(done) / missing.size());
-          return !this->GetAbortExecute();
-        },
-        subset);
-      if (ok)
-      {
-        merge(fresh, 0);
-      }
-    }
-    for (size_t begin = 0; ok && this->Backend == OCCLUSION_QUERY && begin < missing.size();
-         begin += Chunk)
-    {
-      const Directions chunk(
-        missing.begin() + begin, missing.begin() + std::min(missing.size(), begin + Chunk));
-      std::vector<Bits> fresh;
-      ok = in.Renderer->OcclusionQuery(chunk, fresh, error, subset);
-      merge(fresh, begin);
-      this->UpdateProgress(static_cast<double>(begin + chunk.size()) / missing.size());
-      ok = ok && !this->GetAbortExecute();
-    }
-    // SetScene() in this update started the count.
-    this->NumberOfDepthPasses = in.Renderer->GetNumberOfDepthPasses();
-    aborted = this->GetAbortExecute() != 0;
-    if (!ok && !aborted)
-    {
-      vtkErrorMacro("OpenGL failed: " << error << ".");
-      in.Key.clear();
-      return 0;
-    }
+    vtkErrorMacro(<< error);
+    in.Key.clear();
+    return 0;
   }
   if (aborted)
   {
     output->Initialize();
     return 1;
   }
-  for (std::uint32_t i : todo)
+  // 4. The output.
+  this->WriteOutputs(input, output, sphere, directions);
+  if (in.Receivers.NonFinitePoints > 0)
   {
-    in.Directions[i] = k;
-  }
-  this->NumberOfComputedPoints = static_cast<vtkIdType>(todo.size());
-
-  // The output: the input, the arrays, and the lightsphere.
-  output->ShallowCopy(input);
-  vtkPointData* pd = output->GetPointData();
-  if (receivers.NormalsComputed)
-  {
-    pd->SetNormals(receivers.Normals);
-  }
-  // Point i sees direction j when it is above its tangent plane and its bit is set.
-  auto sees = [&](vtkIdType i, int j, double& cosine)
-  {
-    const float* normal = receivers.GetNormal(i);
-    cosine =
-      normal[0] * directions[j][0] + normal[1] * directions[j][1] + normal[2] * directions[j][2];
-    return receivers.Valid[i] && cosine > 0.0 && j < in.Directions[i] && Bit(in.Computed[j], i);
-  };
-  if (this->ComputeVisibility)
-  {
-    vtkNew<vtkFloatArray> visibility;
-    visibility->SetName("Visibility");
-    visibility->SetNumberOfComponents(k);
-    visibility->SetNumberOfTuples(n);
-    float* values = visibility->GetPointer(0);
-    vtkSMPTools::For(0, n,
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        for (vtkIdType i = begin; i < end; ++i)
-        {
-          for (int j = 0; j < k; ++j)
-          {
-            double c = 0.0;
-            values[i * k + j] = sees(i, j, c) ? static_cast<float>(c) : 0.0f;
-          }
-        }
-      });
-    pd->AddArray(visibility);
-  }
-  if (this->ComputeVisibilityBits)
-  {
-    vtkNew<vtkBitArray> bits;
-    bits->SetName("VisibilityBits");
-    bits->SetNumberOfComponents(k);
-    bits->SetNumberOfTuples(n);
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      for (int j = 0; j < k; ++j)
-      {
-        double c = 0.0;
-        bits->SetValue(i * k + j, sees(i, j, c));
-      }
-    }
-    pd->AddArray(bits);
-  }
-  if (this->VertexFiltering)
-  {
-    // Which points have their visibility yet: those of triangles not seen have none.
-    vtkNew<vtkUnsignedCharArray> done;
-    done->SetName("VisibilityComputed");
-    done->SetNumberOfTuples(n);
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      done->SetValue(i, in.Directions[i] >= k ? 1 : 0);
-    }
-    pd->AddArray(done);
-  }
-  vtkSmartPointer<vtkDoubleArray> lightDirections;
-  lightDirections.TakeReference(sphere->NewDirections());
-  vtkSmartPointer<vtkDoubleArray> lightWeights;
-  lightWeights.TakeReference(sphere->NewWeights());
-  vtkNew<vtkFieldData> fields;
-  fields->ShallowCopy(input->GetFieldData());
-  fields->AddArray(lightDirections);
-  fields->AddArray(lightWeights);
-  output->SetFieldData(fields);
-
-  if (receivers.NonFinitePoints > 0)
-  {
-    vtkWarningMacro(<< receivers.NonFinitePoints
+    vtkWarningMacro(<< in.Receivers.NonFinitePoints
                     << " point(s) are not finite (NaN or infinite); they see nothing, and no "
                        "cell that uses them casts shadows.");
   }
@@ -930,6 +841,7 @@ void vtkOcclusionQueryVisibility::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PolygonOffsetFactor: " << this->PolygonOffsetFactor << "\n";
   os << indent << "PolygonOffsetUnits: " << this->PolygonOffsetUnits << "\n";
   os << indent << "RayOffset: " << this->RayOffset << "\n";
+  os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
   os << indent << "ComputeVisibility: " << (this->ComputeVisibility ? "On" : "Off") << "\n";
   os << indent << "ComputeVisibilityBits: " << (this->ComputeVisibilityBits ? "On" : "Off") << "\n";
   os << indent << "VertexFiltering: " << (this->VertexFiltering ? "On" : "Off") << "\n";

@@ -25,8 +25,10 @@
  *   visibility, 0 where no triangle of it has been seen yet;
  * - field data `LightDirections` (k × 3) and `LightWeights` (k solid angles, summing to 4π).
  *
- * The output is the input with these arrays added (and `Normals` when the input had none,
- * computed as vtkAperturePrecompute computes them); the input is never modified.
+ * The output is the input with these arrays added (and `Normals` when the input had none); the
+ * input is never modified. The surface is taken as vtkAperturePrecompute takes it: points at the
+ * same position welded, creases above FeatureAngle splitting normals (and the output's points,
+ * where the input shares one across a crease), and for RAY_CAST its contact and self-hit rules.
  * Input port 1 takes occluders (repeatable): polydata that cast shadows but get no output.
  *
  * Backends:
@@ -38,7 +40,8 @@
  *   draw of all points whose vertex shader makes the same depth test for both and sets each
  *   point's bits in a shader storage buffer (OpenGL 4.3);
  * - RAY_CAST: Embree rays from each point (offset along its normal by RayOffset times its mean
- *   edge length), for machines without OpenGL and as the reference.
+ *   edge length, as vtkAperturePrecompute casts them), for machines without OpenGL and as the
+ *   reference.
  *
  * The OpenGL backends use the render window given to SetRenderWindow() (sharing its context),
  * or else their own off-screen window. The directions of a level are a prefix of those of the
@@ -76,9 +79,14 @@
 #include "vtkApertureLightingModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
-#include <memory> // For std::unique_ptr
-#include <string> // For std::string
+#include <array>      // For std::array
+#include <cstdint>    // For std::uint64_t
+#include <functional> // For std::function
+#include <memory>     // For std::unique_ptr
+#include <string>     // For std::string
+#include <vector>     // For std::vector
 
+class vtkLightSphere;
 class vtkProp3D;
 class vtkRenderWindow;
 class vtkRenderer;
@@ -145,6 +153,15 @@ public:
    */
   vtkSetClampMacro(RayOffset, double, 0.0, 1.0);
   vtkGetMacro(RayOffset, double);
+  ///@}
+
+  ///@{
+  /**
+   * Creases split the points' normals and visibility above this angle (degrees), as in
+   * vtkAperturePrecompute. Default 60.
+   */
+  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
+  vtkGetMacro(FeatureAngle, double);
   ///@}
 
   ///@{
@@ -248,6 +265,7 @@ protected:
   float PolygonOffsetFactor = 1.0f;
   float PolygonOffsetUnits = 1.0f;
   double RayOffset = 0.001;
+  double FeatureAngle = 60.0;
   bool ComputeVisibility = true;
   bool ComputeVisibilityBits = false;
   bool VertexFiltering = false;
@@ -261,10 +279,26 @@ private:
   vtkOcclusionQueryVisibility(const vtkOcclusionQueryVisibility&) = delete;
   void operator=(const vtkOcclusionQueryVisibility&) = delete;
 
-  // The OpenGL window and the scene on it; false with an error when there is none.
-  bool PrepareOpenGL(bool needStorage, std::string& error);
+  // The surfaces of this update, keeping what earlier ones computed for the same geometry.
+  bool UpdateCache(
+    vtkPolyData* input, const std::vector<vtkPolyData*>& occluders, std::string& error);
   // Moves the triangles the camera now sees from the unseen list to the seen points.
   bool UpdateSeen(std::string& error);
+  // The directions of the level that needed points lack, by the backend.
+  bool ComputeMissing(
+    const std::vector<std::array<double, 3>>& directions, bool& aborted, std::string& error);
+  bool CastRays(const std::vector<std::array<double, 3>>& directions,
+    const std::vector<std::uint32_t>& points, std::vector<std::vector<std::uint64_t>>& visible,
+    const std::function<bool(size_t)>& progress, std::string& error);
+  bool RenderOpenGL(const std::vector<std::array<double, 3>>& directions,
+    const std::vector<std::uint32_t>& points, std::vector<std::vector<std::uint64_t>>& visible,
+    const std::function<bool(size_t)>& progress, std::string& error);
+  // The OpenGL window and the scene on it; false with an error when there is none.
+  bool PrepareOpenGL(bool needStorage, std::string& error);
+  // The points, vertices and triangles the OpenGL passes draw.
+  void BuildOpenGLScene();
+  void WriteOutputs(vtkPolyData* input, vtkPolyData* output, vtkLightSphere* sphere,
+    const std::vector<std::array<double, 3>>& directions);
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

@@ -99,6 +99,8 @@ std::string Fingerprint(const Input& input, const Options& options)
     hash.Add(input.Mesh->GetPolys());
     hash.Add(input.Mesh->GetStrips());
     hash.Add(input.Mesh->GetPointData()->GetNormals());
+    hash.Add(options.Crease);
+    hash.Add(input.MaximumEdge);
   }
   return hash.Hex();
 }

@@ -15,12 +15,17 @@
 #include "ApertureRenderOptions.h"
 #include "ApertureRenderPLY.h"
 
+#include "vtkApertureCellCheck.h"
+#include "vtkApertureRefinement.h"
+#include "vtkApertureSurface.h"
+#include "vtkCellArray.h"
 #include "vtkDEMReader.h"
 #include "vtkDataSetReader.h"
 #include "vtkDataSetSurfaceFilter.h"
 #include "vtkFloatArray.h"
 #include "vtkImageReader2.h"
 #include "vtkImageResize.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
 #include "vtkOpenEXRReader.h"
@@ -31,6 +36,7 @@
 #include "vtkSTLReader.h"
 #include "vtkTIFFReader.h"
 #include "vtkTerrainRGBReader.h"
+#include "vtkUnstructuredGrid.h"
 #include "vtkXMLPolyDataReader.h"
 #include "vtksys/SystemTools.hxx"
 
@@ -61,10 +67,24 @@ std::string ReadError(MessageCapture& messages, const std::string& fallback)
   return error.empty() ? fallback : error;
 }
 
+// The first cell whose point ids lie outside the points (a damaged file), or empty.
+std::string BadCell(vtkDataObject* data)
+{
+  if (auto* grid = vtkUnstructuredGrid::SafeDownCast(data))
+  {
+    return vtkApertureCellCheck::FindBadCell(grid);
+  }
+  auto* poly = vtkPolyData::SafeDownCast(data);
+  return poly ? vtkApertureCellCheck::FindBadCell(poly) : std::string();
+}
+
+void NoteNonFinitePoints(Input& input);
+
 bool LoadMesh(const std::string& name, const std::string& extension, MessageCapture& messages,
   Input& input, std::string& error)
 {
   vtkSmartPointer<vtkAlgorithm> reader;
+  vtkNew<vtkCellArray> strips;
   if (extension == ".obj")
   {
     auto obj = vtkSmartPointer<vtkOBJReader>::New();
@@ -73,7 +93,7 @@ bool LoadMesh(const std::string& name, const std::string& extension, MessageCapt
   }
   else if (extension == ".ply")
   {
-    if (!CheckPLY(name, error))
+    if (!CheckPLY(name, strips, error))
     {
       return false;
     }
@@ -140,17 +160,38 @@ bool LoadMesh(const std::string& name, const std::string& extension, MessageCapt
       return false;
     }
     legacy->CloseVTKFile();
+    // vtkDataSetSurfaceFilter reads through the cells' point ids: check them first.
+    messages.Clear();
+    legacy->Update();
+    const std::string bad = BadCell(legacy->GetOutputDataObject(0));
+    if (!bad.empty())
+    {
+      error = Quoted(name) + " is damaged: " + bad;
+      return false;
+    }
     auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
     surface->SetInputConnection(legacy->GetOutputPort());
     reader = surface;
   }
   messages.Clear();
   reader->Update();
-  auto* mesh = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
-  if (!messages.FirstError().empty() || !mesh)
+  auto* read = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+  if (!messages.FirstError().empty() || !read)
   {
     error = "cannot read " + Quoted(name) + ": " + ReadError(messages, "unknown error");
     return false;
+  }
+  const std::string bad = BadCell(read);
+  if (!bad.empty())
+  {
+    error = Quoted(name) + " is damaged: " + bad;
+    return false;
+  }
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->ShallowCopy(read);
+  if (strips->GetNumberOfCells() > 0)
+  {
+    mesh->SetStrips(strips); // vtkPLYReader reads no strips
   }
   if (mesh->GetNumberOfPolys() + mesh->GetNumberOfStrips() == 0)
   {
@@ -160,13 +201,82 @@ bool LoadMesh(const std::string& name, const std::string& extension, MessageCapt
     error = what.str();
     return false;
   }
-  input.Mesh = vtkSmartPointer<vtkPolyData>::New();
-  input.Mesh->ShallowCopy(mesh);
+  input.Mesh = mesh;
   std::ostringstream description;
   description << vtksys::SystemTools::GetFilenameName(name) << ": " << mesh->GetNumberOfPoints()
-              << " points, " << mesh->GetNumberOfPolys() + mesh->GetNumberOfStrips() << " polygons";
+              << " points, " << mesh->GetNumberOfPolys() << " polygons";
+  if (mesh->GetNumberOfStrips() > 0)
+  {
+    description << ", " << mesh->GetNumberOfStrips() << " triangle strips";
+  }
   input.Description = description.str();
+  NoteNonFinitePoints(input);
   return true;
+}
+
+// Points that are not finite: said once; the filter closes them and the view leaves out the
+// cells that use them.
+void NoteNonFinitePoints(Input& input)
+{
+  vtkPoints* points = input.Mesh->GetPoints();
+  for (vtkIdType i = 0; points && i < points->GetNumberOfPoints(); ++i)
+  {
+    const double* p = points->GetPoint(i);
+    input.NonFinitePoints +=
+      (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])) ? 0 : 1;
+  }
+  if (input.NonFinitePoints > 0)
+  {
+    input.Notes.push_back(std::to_string(input.NonFinitePoints) +
+      " point(s) are not finite (NaN or infinite): the cells that use them are left out");
+  }
+}
+
+// The edge length a mesh is refined to: --max-edge, or automatically 1/64 of the scene's
+// diagonal when its longest edge is more than 1/16 of it, coarser if that would make more than
+// a million triangles.
+void ChooseMaximumEdge(const Options& options, Input& input)
+{
+  if (!std::isnan(options.MaximumEdge))
+  {
+    input.MaximumEdge = options.MaximumEdge;
+    return;
+  }
+  double bounds[6];
+  vtkApertureSurface::InitializeBounds(bounds);
+  vtkApertureSurface::ExpandBounds(input.Mesh, bounds);
+  const double diagonal = std::sqrt(std::pow(bounds[1] - bounds[0], 2) +
+    std::pow(bounds[3] - bounds[2], 2) + std::pow(bounds[5] - bounds[4], 2));
+  if (!(vtkApertureRefinement::LongestEdge(input.Mesh) > diagonal / 16.0))
+  {
+    return;
+  }
+  // Each triangle becomes about (its longest edge / L)^2 triangles.
+  double squares = 0.0;
+  std::vector<vtkIdType> local;
+  for (vtkCellArray* cells : { input.Mesh->GetPolys(), input.Mesh->GetStrips() })
+  {
+    vtkIdType npts;
+    const vtkIdType* ids;
+    for (cells->InitTraversal(); cells->GetNextCell(npts, ids);)
+    {
+      double longest = 0.0;
+      for (vtkIdType k = 0; k < npts; ++k)
+      {
+        double a[3], b[3];
+        input.Mesh->GetPoint(ids[k], a);
+        input.Mesh->GetPoint(ids[(k + 1) % npts], b);
+        const double d = std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+        longest = std::isfinite(d) ? std::max(longest, d) : longest;
+      }
+      squares += longest * longest * std::max<vtkIdType>(1, npts - 2);
+    }
+  }
+  input.MaximumEdge = std::max(diagonal / 64.0, std::sqrt(squares / 1e6));
+  std::ostringstream note;
+  note << "faces are large against the scene: refined to edges of at most " << input.MaximumEdge
+       << " for contact shadows (--max-edge)";
+  input.Notes.push_back(note.str());
 }
 
 // Checks a USGS DEM the way vtkDEMReader reads it, which would divide by zero on a grid
@@ -518,7 +628,12 @@ bool LoadInput(const Options& options, MessageCapture& messages, Input& input, s
     static const std::vector<std::string> fields = { ".png", ".tif", ".tiff", ".dem", ".hgt" };
     if (std::find(meshes.begin(), meshes.end(), extension) != meshes.end())
     {
-      return LoadMesh(name, extension, messages, input, error);
+      if (!LoadMesh(name, extension, messages, input, error))
+      {
+        return false;
+      }
+      ChooseMaximumEdge(options, input);
+      return true;
     }
     if (std::find(fields.begin(), fields.end(), extension) == fields.end())
     {

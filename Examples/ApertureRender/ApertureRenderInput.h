@@ -35,6 +35,10 @@ struct Input
   vtkSmartPointer<vtkImageData> Environment;
   // What was changed on the way (resampling, filled voids), for the user.
   std::vector<std::string> Notes;
+  // Meshes: the edge length they are refined to (0: not refined).
+  double MaximumEdge = 0.0;
+  // Points that are not finite (the cells that use them are not drawn).
+  vtkIdType NonFinitePoints = 0;
 };
 
 // Reads the input the options name, or the embedded Mount Fuji tile. Returns false with one

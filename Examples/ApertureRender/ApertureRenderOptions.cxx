@@ -66,7 +66,8 @@ std::string Quoted(const std::string& text)
 }
 
 Options::Options()
-  : CameraAzimuth(std::numeric_limits<double>::quiet_NaN())
+  : MaximumEdge(std::numeric_limits<double>::quiet_NaN())
+  , CameraAzimuth(std::numeric_limits<double>::quiet_NaN())
   , CameraElevation(std::numeric_limits<double>::quiet_NaN())
   , EnvironmentExposure(std::numeric_limits<double>::quiet_NaN())
 {
@@ -83,7 +84,7 @@ int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
 {
   std::string output, size, mode, show, sky, rays, cache, saveData, azimuth, elevation, zoom, up,
     spacing, heightScale, maximumGrid, background, environment, environmentAzimuth,
-    environmentExposure;
+    environmentExposure, crease, maximumEdge;
   std::vector<std::string> suns, sphereLights;
   bool interactive = false, help = false, version = false;
 
@@ -105,6 +106,8 @@ int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
   arguments.AddArgument("--env-azimuth", value, &environmentAzimuth, "");
   arguments.AddArgument("--env-exposure", value, &environmentExposure, "");
   arguments.AddArgument("--rays", value, &rays, "");
+  arguments.AddArgument("--crease", value, &crease, "");
+  arguments.AddArgument("--max-edge", value, &maximumEdge, "");
   arguments.AddArgument("--cache", value, &cache, "");
   arguments.AddArgument("--save-data", value, &saveData, "");
   arguments.AddArgument("--azimuth", value, &azimuth, "");
@@ -122,8 +125,8 @@ int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
   // An option that takes a value cannot be the last word.
   static const std::set<std::string> takesValue = { "-o", "--output", "--size", "--mode", "--show",
     "--sun", "--sphere-light", "--sky", "--env", "--env-azimuth", "--env-exposure", "--rays",
-    "--cache", "--save-data", "--azimuth", "--elevation", "--zoom", "--up", "--spacing",
-    "--height-scale", "--max-grid", "--background" };
+    "--crease", "--max-edge", "--cache", "--save-data", "--azimuth", "--elevation", "--zoom",
+    "--up", "--spacing", "--height-scale", "--max-grid", "--background" };
   if (argc > 1 && takesValue.count(argv[argc - 1]))
   {
     error = std::string("option ") + argv[argc - 1] + " needs a value (see --help)";
@@ -304,6 +307,24 @@ int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
     }
     options.Rays = static_cast<int>(number);
   }
+  if (!crease.empty() &&
+    (!ToNumber(crease, options.Crease) || options.Crease < 0.0 || options.Crease > 180.0))
+  {
+    error = "--crease " + Quoted(crease) + " is not an angle from 0 to 180 degrees";
+    return 2;
+  }
+  if (!maximumEdge.empty() && maximumEdge != "auto")
+  {
+    if (maximumEdge == "none")
+    {
+      options.MaximumEdge = 0.0;
+    }
+    else if (!ToNumber(maximumEdge, options.MaximumEdge) || options.MaximumEdge <= 0.0)
+    {
+      error = "--max-edge " + Quoted(maximumEdge) + " is not auto, none or a positive length";
+      return 2;
+    }
+  }
   if (!maximumGrid.empty())
   {
     if (!ToNumber(maximumGrid, number) || number != std::floor(number) || number < 2 ||
@@ -411,6 +432,12 @@ Lights and shading:
   --mode MODE            exact (default), smoothstep, simplified, bentnormal, standard (plain VTK
                          lighting), or all: one picture with a panel per mode
   --rays N               rays per point for the apertures (default 256)
+  --crease DEG           meshes: where faces meet at more than DEG degrees, each side gets its
+                         own normal and aperture, as a CAD part's sharp edges need (default 60:
+                         tessellated curves and scan noise stay smooth); 180 never splits
+  --max-edge L           meshes: split triangles until no edge is longer than L (data units),
+                         so that large faces get contact shadows; auto (default) does it when
+                         faces are large against the scene (a box on a ground), none never
   --cache FILE           keep the apertures in FILE (.vtp for meshes, .vti for height fields):
                          the next run with the same input and --rays reads them instead of
                          casting rays; a cache made for other data is recomputed and replaced

@@ -50,6 +50,10 @@ struct Options
   // Stops by which the environment is brightened; NaN: automatic (an open level surface at 0.8).
   double EnvironmentExposure;
   int Rays = 256;
+  // Creases: normals and apertures split where faces meet at more than this (degrees).
+  double Crease = 60.0;
+  // Meshes: refine to edges of at most this length; NaN: automatically, 0: never.
+  double MaximumEdge;
   std::string Cache;
   std::string SaveData;
   // Camera: compass azimuth and elevation of the eye as seen from the data; NaN: the default view.

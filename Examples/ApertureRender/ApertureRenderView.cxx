@@ -14,10 +14,14 @@
 #include "ApertureRenderInput.h"
 #include "ApertureRenderMessages.h"
 
+#include "ApertureRenderCamera.h"
+
 #include "vtkActor.h"
 #include "vtkApertureLightingMapper.h"
+#include "vtkApertureSurface.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
+#include "vtkCellArray.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
@@ -63,6 +67,46 @@ double Radians(double degrees)
 {
   return vtkMath::RadiansFromDegrees(degrees);
 }
+
+// The surface without the cells that use points that are not finite.
+vtkSmartPointer<vtkPolyData> FiniteCells(vtkPolyData* surface)
+{
+  vtkPoints* points = surface->GetPoints();
+  auto finite = [points](vtkIdType npts, const vtkIdType* ids)
+  {
+    for (vtkIdType k = 0; k < npts; ++k)
+    {
+      const double* p = points->GetPoint(ids[k]);
+      if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  auto keep = [&](vtkCellArray* cells)
+  {
+    auto kept = vtkSmartPointer<vtkCellArray>::New();
+    vtkIdType npts;
+    const vtkIdType* ids;
+    for (cells->InitTraversal(); cells->GetNextCell(npts, ids);)
+    {
+      if (finite(npts, ids))
+      {
+        kept->InsertNextCell(npts, ids);
+      }
+    }
+    return kept;
+  };
+  auto drawn = vtkSmartPointer<vtkPolyData>::New();
+  drawn->SetPoints(points);
+  drawn->GetPointData()->ShallowCopy(surface->GetPointData());
+  drawn->SetVerts(keep(surface->GetVerts()));
+  drawn->SetLines(keep(surface->GetLines()));
+  drawn->SetPolys(keep(surface->GetPolys()));
+  drawn->SetStrips(keep(surface->GetStrips()));
+  return drawn;
+}
 }
 
 View::View(const Options& options, const Input& input, vtkDataObject* apertures)
@@ -96,19 +140,36 @@ View::View(const Options& options, const Input& input, vtkDataObject* apertures)
   {
     this->Surface = vtkPolyData::SafeDownCast(apertures);
   }
+  this->Drawn = input.NonFinitePoints > 0 ? FiniteCells(this->Surface) : this->Surface;
   double bounds[6];
-  this->Surface->GetBounds(bounds);
+  vtkApertureSurface::InitializeBounds(bounds);
+  vtkApertureSurface::ExpandBounds(this->Drawn, bounds);
   for (int k = 0; k < 3; ++k)
   {
-    this->Center[k] = 0.5 * (bounds[2 * k] + bounds[2 * k + 1]);
+    this->Center[k] = bounds[0] <= bounds[1] ? 0.5 * (bounds[2 * k] + bounds[2 * k + 1]) : 0.0;
   }
-  this->SetUpAxes(
-    options.Up.empty() ? (this->HeightField ? std::string("+z") : std::string("+y")) : options.Up);
+  // Height fields rise along +z and are seen from the south-south-west; meshes, see ChooseView.
+  const MeshView chosen = this->HeightField
+    ? MeshView{ options.Up.empty() ? "+z" : options.Up, 200.0 }
+    : ChooseView(this->Drawn, options.Up);
+  CompassOf(chosen.Up, this->East, this->North, this->Up);
+  this->DefaultAzimuth = chosen.Azimuth;
 
-  this->Mapper->SetInputData(this->Surface);
+  this->Mapper->SetInputData(this->Drawn);
   this->Mapper->SetShadingMode(this->Mode);
   this->Mapper->SetSkyColor(options.Sky[0], options.Sky[1], options.Sky[2]);
   this->Mapper->SetSkyIntensity(1.0);
+  vtkProperty* property = this->Actor->GetProperty();
+  if (this->HeightField)
+  {
+    property->SetColor(0.92, 0.87, 0.8);
+  }
+  else
+  {
+    property->SetColor(0.9, 0.86, 0.8);
+    property->SetSpecular(0.15);
+    property->SetSpecularPower(24.0);
+  }
   if (input.Environment)
   {
     // The environment's zenith along the data's up axis and its north on the data's north.
@@ -123,37 +184,19 @@ View::View(const Options& options, const Input& input, vtkDataObject* apertures)
     double exposure = options.EnvironmentExposure;
     if (std::isnan(exposure))
     {
-      // HDR maps hold radiance in any unit: show an open level surface at 80% white.
-      double open[3];
-      this->Environment->CapIrradiance(this->Up, vtkMath::Pi() / 2.0, open);
-      const double* tint = this->Mapper->GetSkyColor();
-      const double radiance =
-        (0.2126 * open[0] * tint[0] + 0.7152 * open[1] * tint[1] + 0.0722 * open[2] * tint[2]) /
-        vtkMath::Pi();
-      exposure = radiance > 0.0 ? std::log2(0.8 / radiance) : 0.0;
+      exposure = this->AutomaticExposure();
     }
     this->SkyIntensity = std::exp2(exposure);
     this->Mapper->SetSkyIntensity(this->SkyIntensity);
   }
   // Meshes that bring their own RGB colours (PLY scans) keep them; other arrays are not colours.
-  vtkDataArray* scalars = this->Surface->GetPointData()->GetScalars();
+  vtkDataArray* scalars = this->Drawn->GetPointData()->GetScalars();
   const bool colours = !this->HeightField && scalars &&
     scalars->GetDataType() == VTK_UNSIGNED_CHAR &&
     (scalars->GetNumberOfComponents() == 3 || scalars->GetNumberOfComponents() == 4);
   this->Mapper->SetScalarVisibility(colours);
   this->Mapper->SetColorModeToDirectScalars();
   this->Actor->SetMapper(this->Mapper);
-  vtkProperty* property = this->Actor->GetProperty();
-  if (this->HeightField)
-  {
-    property->SetColor(0.92, 0.87, 0.8);
-  }
-  else
-  {
-    property->SetColor(0.9, 0.86, 0.8);
-    property->SetSpecular(0.15);
-    property->SetSpecularPower(24.0);
-  }
   this->Renderer->AddActor(this->Actor);
   this->Renderer->SetBackground(options.Background);
   this->AddLights();
@@ -200,17 +243,36 @@ View::~View()
   CloseDisplay(this->Display);
 }
 
-void View::SetUpAxes(const std::string& up)
+double View::AutomaticExposure() const
 {
-  // East x north = up, with east +x unless up is along x.
-  const int axis = up[1] - 'x';
-  const double sign = up[0] == '-' ? -1.0 : 1.0;
-  for (int k = 0; k < 3; ++k)
+  // HDR maps hold radiance in any unit: an open level surface at 80% white, but no open surface
+  // facing any way (toward a low sun) brighter than white.
+  const double* tint = this->Mapper->GetSkyColor();
+  const double albedo = vtkMath::Norm(this->Actor->GetProperty()->GetColor()) / std::sqrt(3.0);
+  auto luminance = [&](const double direction[3])
   {
-    this->Up[k] = k == axis ? sign : 0.0;
-    this->East[k] = k == (axis == 0 ? 1 : 0) ? 1.0 : 0.0;
+    double open[3];
+    this->Environment->CapIrradiance(direction, vtkMath::Pi() / 2.0, open);
+    return (0.2126 * open[0] * tint[0] + 0.7152 * open[1] * tint[1] + 0.0722 * open[2] * tint[2]) /
+      vtkMath::Pi();
+  };
+  const double level = luminance(this->Up);
+  double brightest = level;
+  const int samples = 256;
+  for (int i = 0; i < samples; ++i)
+  {
+    // A Fibonacci sphere of directions.
+    const double z = 1.0 - (2.0 * i + 1.0) / samples;
+    const double phi = i * vtkMath::Pi() * (3.0 - std::sqrt(5.0));
+    const double d[3] = { std::sqrt(1.0 - z * z) * std::cos(phi),
+      std::sqrt(1.0 - z * z) * std::sin(phi), z };
+    brightest = std::max(brightest, luminance(d));
   }
-  vtkMath::Cross(this->Up, this->East, this->North);
+  if (!(level > 0.0) || !(brightest > 0.0))
+  {
+    return 0.0;
+  }
+  return std::min(std::log2(0.8 / level), std::log2(0.95 / (albedo * brightest)));
 }
 
 void View::TurnEnvironment(double azimuth)
@@ -292,8 +354,8 @@ void View::AddLights()
 void View::PlaceCamera()
 {
   const bool field = this->HeightField;
-  const double azimuth = std::isnan(this->Settings.CameraAzimuth) ? (field ? 200.0 : 180.0)
-                                                                  : this->Settings.CameraAzimuth;
+  const double azimuth =
+    std::isnan(this->Settings.CameraAzimuth) ? this->DefaultAzimuth : this->Settings.CameraAzimuth;
   const double elevation = std::isnan(this->Settings.CameraElevation)
     ? (field ? 28.0 : 15.0)
     : this->Settings.CameraElevation;
@@ -440,7 +502,7 @@ void View::ShowApertureData(bool show)
     this->Actor->GetProperty()->SetDiffuse(1.0);
     this->Mapper->SetScalarModeToDefault();
     this->Mapper->SetColorModeToDirectScalars();
-    vtkDataArray* scalars = this->Surface->GetPointData()->GetScalars();
+    vtkDataArray* scalars = this->Drawn->GetPointData()->GetScalars();
     this->Mapper->SetScalarVisibility(!this->HeightField && scalars &&
       scalars->GetDataType() == VTK_UNSIGNED_CHAR && scalars->GetNumberOfComponents() >= 3);
   }

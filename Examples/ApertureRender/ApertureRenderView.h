@@ -64,8 +64,8 @@ public:
   void Interact();
 
 private:
-  // The data's compass: unit east, north and up vectors.
-  void SetUpAxes(const std::string& up);
+  // Stops that show the environment well: see --env-exposure.
+  double AutomaticExposure() const;
   // Turns the environment to a compass azimuth about the data's up axis.
   void TurnEnvironment(double azimuth);
   void Direction(double azimuth, double elevation, double direction[3]) const;
@@ -82,6 +82,8 @@ private:
   bool HeightField;
   vtkSmartPointer<vtkDataObject> Apertures;
   vtkSmartPointer<vtkPolyData> Surface;
+  vtkSmartPointer<vtkPolyData> Drawn; // Surface without cells that use points not finite
+  double DefaultAzimuth = 180.0;
   double Center[3];
   double East[3], North[3], Up[3];
   int Mode = 0;

@@ -169,6 +169,8 @@ int main(int argc, char* argv[])
     }
     precompute->SetNumberOfRays(options.Rays);
     precompute->SetHeightScale(options.HeightScale);
+    precompute->SetFeatureAngle(options.Crease);
+    precompute->SetMaximumEdgeLength(input.MaximumEdge);
     precompute->ComputeAmbientOcclusionOn();
     messages.Clear();
     const auto start = std::chrono::steady_clock::now();

@@ -188,10 +188,13 @@ void TestWarnings()
     "NaN/Inf points get a closed cap around +z");
   Check(rest, "the other points are right");
 
-  // Degenerate and zero-area triangles: ignored as occluders; points only they use are closed.
+  // Degenerate and zero-area triangles: ignored as occluders; points only they use are closed,
+  // unless they lie where a vertex of the surface is (then they are that surface point).
   plane = Plane();
-  const vtkIdType lonely = plane->GetPoints()->InsertNextPoint(0.2, 0.2, 0.0);
-  const vtkIdType degenerate[3][3] = { { 0, 0, 1 }, { 0, 1, 2 }, { lonely, lonely, lonely } };
+  const vtkIdType lonely = plane->GetPoints()->InsertNextPoint(0.23, 0.27, 0.0);
+  const vtkIdType welded = plane->GetPoints()->InsertNextPoint(0.2, 0.2, 0.0);
+  const vtkIdType degenerate[4][3] = { { 0, 0, 1 }, { 0, 1, 2 }, { lonely, lonely, lonely },
+    { welded, welded, welded } };
   for (const auto& cell : degenerate)
   {
     plane->GetPolys()->InsertNextCell(3, cell);
@@ -202,7 +205,9 @@ void TestWarnings()
     "degenerate triangles: a warning for the point only they use");
   Check(std::abs(zeroArea.Radius()->GetTuple1(5) - 0.5 * Pi) < 1e-6 &&
       zeroArea.Radius()->GetTuple1(lonely) == 0.0,
-    "degenerate triangles: the plane stays open");
+    "degenerate triangles: the plane stays open, the lonely point is closed");
+  Check(std::abs(zeroArea.Radius()->GetTuple1(welded) - 0.5 * Pi) < 1e-6,
+    "a degenerate triangle's point on a surface vertex shares its aperture");
 
   // Duplicate points and a duplicated surface: rays start above the coincident copy.
   plane = Plane();

@@ -17,8 +17,8 @@
 // - the visibility matrix relit at k = 258 (vtkEnvironmentVisibilityLighting).
 // The errors are relative L1 over the vertices, per colour channel, summed.
 
-#include "vtkApertureHemisphereSampler.h"
 #include "vtkAperturePrecompute.h"
+#include "vtkApertureRayPacket.h"
 #include "vtkApertureRayScene.h"
 #include "vtkApertureSurface.h"
 #include "vtkEnvironmentMap.h"
@@ -78,8 +78,9 @@ int TestEnvironmentSkyAccuracy(int argc, char* argv[])
   vtkApertureSurface mesh;
   std::string error;
   vtkApertureRayScene scene;
-  const bool ready = mesh.SetPolyData(surface, origin, error) && scene.Initialize("", false) &&
-    scene.AddSurface(mesh) && scene.Commit();
+  bool ready = mesh.SetPolyData(surface, origin, apertures->GetFeatureAngle(), error);
+  mesh.SetRayOffset(apertures->GetRayOffset());
+  ready = ready && scene.Build(mesh, {});
   if (!ready)
   {
     std::cerr << "FAIL cannot build the ray scene: " << error << scene.GetError() << "\n";
@@ -107,38 +108,32 @@ int TestEnvironmentSkyAccuracy(int argc, char* argv[])
   }
   const int stride = 8;
   const vtkIdType m = (n + stride - 1) / stride;
-  const vtkApertureHemisphereSampler sampler(16, 97, false, 0.001); // for the ray origins
   std::vector<double> reference(3 * m, 0.0);
   vtkSMPTools::For(0, m,
     [&](vtkIdType first, vtkIdType last)
     {
-      RTCIntersectContext context;
-      rtcInitIntersectContext(&context);
-      alignas(64) RTCRay16 ray;
-      alignas(64) int valid[16];
-      int pixel[16];
-      vtkApertureHemisphereSampler::Point point;
+      vtkApertureRayPacket packet(scene, mesh);
+      int pixel[vtkApertureRayPacket::Lanes];
       for (vtkIdType s = first; s < last; ++s)
       {
-        const vtkIdType i = s * stride;
-        if (!mesh.Valid[i])
+        const vtkIdType i = mesh.InputPoints[s * stride];
+        if (i < 0 || !mesh.Valid[i])
         {
           continue;
         }
-        sampler.Begin(mesh, i, point);
         const float* normal = mesh.GetNormal(i);
         // Gathers the pixels above the tangent plane 16 at a time into a packet.
         int lanes = 0;
         auto trace = [&]()
         {
-          for (int lane = lanes; lane < 16; ++lane)
+          for (int lane = lanes; lane < vtkApertureRayPacket::Lanes; ++lane)
           {
-            valid[lane] = 0;
+            packet.Clear(lane);
           }
-          rtcOccluded16(valid, scene.GetScene(), &context, &ray);
+          packet.Trace();
           for (int lane = 0; lane < lanes; ++lane)
           {
-            if (ray.tfar[lane] >= 0.0f)
+            if (packet.Visible(lane))
             {
               const float* d = &pixelDirections[3 * pixel[lane]];
               const double c = d[0] * normal[0] + d[1] * normal[1] + d[2] * normal[2];
@@ -157,21 +152,9 @@ int TestEnvironmentSkyAccuracy(int argc, char* argv[])
           {
             continue;
           }
-          valid[lanes] = -1;
           pixel[lanes] = p;
-          ray.org_x[lanes] = point.Origin[0];
-          ray.org_y[lanes] = point.Origin[1];
-          ray.org_z[lanes] = point.Origin[2];
-          ray.dir_x[lanes] = d[0];
-          ray.dir_y[lanes] = d[1];
-          ray.dir_z[lanes] = d[2];
-          ray.tnear[lanes] = 0.0f;
-          ray.tfar[lanes] = std::numeric_limits<float>::infinity();
-          ray.time[lanes] = 0.0f;
-          ray.mask[lanes] = 0xffffffffu;
-          ray.id[lanes] = 0;
-          ray.flags[lanes] = 0;
-          if (++lanes == 16)
+          packet.Set(lanes, i, d, std::numeric_limits<float>::infinity());
+          if (++lanes == vtkApertureRayPacket::Lanes)
           {
             trace();
           }

@@ -1,0 +1,39 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    ApertureRenderCamera.h
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+// aperture-render's default view of a mesh: which way is up, and from where its broad side shows.
+
+#ifndef ApertureRenderCamera_h
+#define ApertureRenderCamera_h
+
+#include <string>
+
+class vtkPolyData;
+
+namespace ApertureRender
+{
+struct MeshView
+{
+  std::string Up; // "+x" ... "-z"
+  double Azimuth; // compass azimuth of the eye, degrees (see View::Direction)
+};
+
+// The up axis (`up`, or when empty the axis opposite a flat base at the bottom, else +y, the
+// convention of OBJ files and ParaView) and an eye along the mesh's thinner horizontal axis, so
+// that its broad side faces the camera: on the side its surface faces most (the front of an
+// open scan), else on the conventional front (+z with y up, -y with z up).
+MeshView ChooseView(vtkPolyData* mesh, const std::string& up);
+
+// The unit east, north and up vectors of an up axis: east x north = up, east +x unless up is
+// along x.
+void CompassOf(const std::string& up, double east[3], double north[3], double upward[3]);
+}
+
+#endif

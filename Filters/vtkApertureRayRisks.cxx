@@ -1,0 +1,291 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    vtkApertureRayRisks.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkApertureRayRisks.h"
+
+#include "vtkApertureRayScene.h"
+#include "vtkApertureSurface.h"
+#include "vtkSMPTools.h"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <numeric>
+
+namespace
+{
+// Cells a triangle may span before it is counted as needing the filter unchecked.
+constexpr double MaximumCells = 512.0;
+
+void Subtract(const float a[3], const float b[3], double d[3])
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    d[k] = double(a[k]) - double(b[k]);
+  }
+}
+
+double Dot(const double a[3], const double b[3])
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+// Squared distance from p to triangle abc (Ericson, Real-Time Collision Detection, 5.1.5).
+double Distance2(const float p[3], const float a[3], const float b[3], const float c[3])
+{
+  double ab[3], ac[3], ap[3], bp[3], cp[3];
+  Subtract(b, a, ab);
+  Subtract(c, a, ac);
+  Subtract(p, a, ap);
+  Subtract(p, b, bp);
+  Subtract(p, c, cp);
+  const double d1 = Dot(ab, ap), d2 = Dot(ac, ap), d3 = Dot(ab, bp), d4 = Dot(ac, bp);
+  const double d5 = Dot(ab, cp), d6 = Dot(ac, cp);
+  double v = 0.0, w = 0.0; // the closest point is a + v ab + w ac
+  const double va = d3 * d6 - d5 * d4, vb = d5 * d2 - d1 * d6, vc = d1 * d4 - d3 * d2;
+  if (d1 <= 0.0 && d2 <= 0.0)
+  {
+  }
+  else if (d3 >= 0.0 && d4 <= d3)
+  {
+    v = 1.0;
+  }
+  else if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0)
+  {
+    v = d1 / (d1 - d3);
+  }
+  else if (d6 >= 0.0 && d5 <= d6)
+  {
+    w = 1.0;
+  }
+  else if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0)
+  {
+    w = d2 / (d2 - d6);
+  }
+  else if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0)
+  {
+    w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    v = 1.0 - w;
+  }
+  else
+  {
+    const double denominator = 1.0 / (va + vb + vc);
+    v = vb * denominator;
+    w = vc * denominator;
+  }
+  double q[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    q[k] = ap[k] - v * ab[k] - w * ac[k];
+  }
+  return Dot(q, q);
+}
+}
+
+//------------------------------------------------------------------------------
+vtkApertureRayRisks::vtkApertureRayRisks(const std::vector<const vtkApertureSurface*>& receivers)
+{
+  // The ray start of every valid receiving point, and two mean edges as the cell size.
+  double edges = 0.0;
+  vtkIdType count = 0;
+  for (const vtkApertureSurface* s : receivers)
+  {
+    for (vtkIdType i = 0; i < s->GetNumberOfPoints(); ++i)
+    {
+      if (!s->Valid[i])
+      {
+        continue;
+      }
+      Start start;
+      std::copy_n(&s->Start[3 * i], 3, start.Position);
+      start.Radius = vtkApertureRayScene::NearZone * s->Offset[i];
+      start.Surface = s;
+      start.Vertex = s->PointVertex[i];
+      this->Starts.push_back(start);
+      this->LargestRadius = std::max(this->LargestRadius, start.Radius);
+    }
+    for (size_t t = 0; t < s->Triangles.size(); ++t)
+    {
+      double d[3];
+      Subtract(&s->Vertices[3 * size_t(s->Triangles[t])],
+        &s->Vertices[3 * size_t(s->Triangles[t - t % 3 + (t + 1) % 3])], d);
+      edges += std::sqrt(Dot(d, d));
+      ++count;
+    }
+  }
+  if (this->Starts.empty())
+  {
+    return;
+  }
+  std::fill_n(this->Lower, 3, FLT_MAX);
+  for (const Start& s : this->Starts)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Lower[k] = std::min(this->Lower[k], s.Position[k]);
+    }
+  }
+  this->Size =
+    static_cast<float>(std::max(count ? 2.0 * edges / count : 0.0, 4.0 * this->LargestRadius));
+  this->Size = this->Size > 0.0f ? this->Size : 1.0f;
+  std::vector<std::uint64_t> keys(this->Starts.size());
+  for (size_t i = 0; i < this->Starts.size(); ++i)
+  {
+    const float* p = this->Starts[i].Position;
+    keys[i] = Key(this->Index(p[0], 0), this->Index(p[1], 1), this->Index(p[2], 2));
+  }
+  this->Order.resize(this->Starts.size());
+  std::iota(this->Order.begin(), this->Order.end(), 0u);
+  std::sort(this->Order.begin(), this->Order.end(),
+    [&keys](std::uint32_t a, std::uint32_t b) { return keys[a] < keys[b]; });
+  for (std::uint32_t i = 0; i < this->Order.size();)
+  {
+    std::uint32_t j = i;
+    while (j < this->Order.size() && keys[this->Order[j]] == keys[this->Order[i]])
+    {
+      ++j;
+    }
+    this->Cells[keys[this->Order[i]]] = { i, j };
+    i = j;
+  }
+}
+
+//------------------------------------------------------------------------------
+std::int64_t vtkApertureRayRisks::Index(float x, int axis) const
+{
+  // Clamped to the 21 bits a key has per axis (cells beyond are shared, which is harmless).
+  const double c = std::floor((double(x) - this->Lower[axis]) / this->Size);
+  return static_cast<std::int64_t>(std::min(std::max(c, 0.0), 2097151.0));
+}
+
+//------------------------------------------------------------------------------
+std::uint64_t vtkApertureRayRisks::Key(std::int64_t i, std::int64_t j, std::int64_t k)
+{
+  return static_cast<std::uint64_t>(i) << 42 | static_cast<std::uint64_t>(j) << 21 |
+    static_cast<std::uint64_t>(k);
+}
+
+//------------------------------------------------------------------------------
+std::vector<unsigned char> vtkApertureRayRisks::Find(
+  const vtkApertureSurface& surface, bool receiver) const
+{
+  const vtkIdType triangles = surface.GetNumberOfTriangles();
+  std::vector<unsigned char> risky(triangles, 0);
+  if (receiver)
+  {
+    this->MarkIncident(surface, risky);
+  }
+  vtkSMPTools::For(0, triangles, 1024,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        risky[t] = risky[t] || this->NearStart(surface, static_cast<std::uint32_t>(t));
+      }
+    });
+  return risky;
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureRayRisks::MarkIncident(
+  const vtkApertureSurface& surface, std::vector<unsigned char>& risky) const
+{
+  // The receiving points of each vertex.
+  const vtkIdType vertices = surface.GetNumberOfVertices();
+  std::vector<vtkIdType> first(vertices + 1, 0);
+  for (const std::uint32_t v : surface.PointVertex)
+  {
+    ++first[v + 1];
+  }
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  std::vector<vtkIdType> points(surface.PointVertex.size()), fill(first.begin(), first.end() - 1);
+  for (size_t i = 0; i < points.size(); ++i)
+  {
+    points[fill[surface.PointVertex[i]]++] = static_cast<vtkIdType>(i);
+  }
+  for (size_t t = 0; t < risky.size(); ++t)
+  {
+    const std::uint32_t* v = &surface.Triangles[3 * t];
+    double e1[3], e2[3];
+    Subtract(&surface.Vertices[3 * size_t(v[1])], &surface.Vertices[3 * size_t(v[0])], e1);
+    Subtract(&surface.Vertices[3 * size_t(v[2])], &surface.Vertices[3 * size_t(v[0])], e2);
+    double normal[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+      e1[0] * e2[1] - e1[1] * e2[0] };
+    const double length = std::sqrt(Dot(normal, normal));
+    for (int c = 0; c < 3 && !risky[t]; ++c)
+    {
+      for (vtkIdType k = first[v[c]]; k < first[v[c] + 1] && !risky[t]; ++k)
+      {
+        const float* n = surface.GetNormal(points[k]);
+        const double cosine = (n[0] * normal[0] + n[1] * normal[1] + n[2] * normal[2]) / length;
+        risky[t] = surface.Valid[points[k]] && !(cosine >= vtkApertureRayScene::PullBack);
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkApertureRayRisks::NearStart(const vtkApertureSurface& surface, std::uint32_t t) const
+{
+  if (this->Starts.empty())
+  {
+    return false;
+  }
+  const std::uint32_t* v = &surface.Triangles[3 * size_t(t)];
+  const float* corner[3] = { &surface.Vertices[3 * size_t(v[0])],
+    &surface.Vertices[3 * size_t(v[1])], &surface.Vertices[3 * size_t(v[2])] };
+  float box[6];
+  std::int64_t lo[3], hi[3];
+  double cells = 1.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    box[2 * k] = std::min({ corner[0][k], corner[1][k], corner[2][k] }) - this->LargestRadius;
+    box[2 * k + 1] = std::max({ corner[0][k], corner[1][k], corner[2][k] }) + this->LargestRadius;
+    lo[k] = this->Index(box[2 * k], k);
+    hi[k] = this->Index(box[2 * k + 1], k);
+    cells *= static_cast<double>(hi[k] - lo[k] + 1);
+  }
+  if (!(cells <= MaximumCells))
+  {
+    return true;
+  }
+  for (std::int64_t i = lo[0]; i <= hi[0]; ++i)
+  {
+    for (std::int64_t j = lo[1]; j <= hi[1]; ++j)
+    {
+      for (std::int64_t k = lo[2]; k <= hi[2]; ++k)
+      {
+        const auto found = this->Cells.find(Key(i, j, k));
+        if (found == this->Cells.end())
+        {
+          continue;
+        }
+        for (std::uint32_t c = found->second.first; c < found->second.second; ++c)
+        {
+          const Start& s = this->Starts[this->Order[c]];
+          const float* q = s.Position;
+          if (q[0] < box[0] || q[0] > box[1] || q[1] < box[2] || q[1] > box[3] || q[2] < box[4] ||
+            q[2] > box[5])
+          {
+            continue;
+          }
+          const bool own =
+            s.Surface == &surface && (v[0] == s.Vertex || v[1] == s.Vertex || v[2] == s.Vertex);
+          if (!own &&
+            Distance2(s.Position, corner[0], corner[1], corner[2]) <= double(s.Radius) * s.Radius)
+          {
+            return true;
+          }
+        }
+      }
+    }
+  }
+  return false;
+}
