@@ -105,7 +105,7 @@ vtkApertureRayRisks::vtkApertureRayRisks(const std::vector<const vtkApertureSurf
       }
       Start start;
       std::copy_n(&s->Start[3 * i], 3, start.Position);
-      start.Radius = vtkApertureRayScene::NearZone * s->Offset[i];
+      start.Radius = s->Near[i];
       start.Surface = s;
       start.Vertex = s->PointVertex[i];
       this->Starts.push_back(start);

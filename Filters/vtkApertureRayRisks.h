@@ -17,7 +17,7 @@
  *
  * - it is at the vertex of a receiving point whose normal is within acos(PullBack) of
  *   perpendicular to its own, or against it (rays from that point can meet it from behind), or
- * - it passes within NearZone offsets of the ray start of some other receiving point.
+ * - it passes within the Near distance of the ray start of some other receiving point.
  *
  * The second test looks the ray starts up in a hash grid of cells about two edges long. Triangles
  * spanning too many cells to check are counted as needing the filter: that is always correct,
@@ -55,7 +55,7 @@ private:
   struct Start
   {
     float Position[3];
-    float Radius; // NearZone offsets
+    float Radius; // the point's Near distance
     const vtkApertureSurface* Surface;
     std::uint32_t Vertex;
   };

@@ -94,7 +94,7 @@ void vtkApertureRayScene::Filter(const RTCFilterFunctionNArguments* args)
       const std::uint32_t vertex = source->PointVertex[point];
       incident = triangle[0] == vertex || triangle[1] == vertex || triangle[2] == vertex;
     }
-    const bool near = RTCRayN_tfar(args->ray, n, i) <= NearZone * source->Offset[point];
+    const bool near = RTCRayN_tfar(args->ray, n, i) <= source->Near[point];
     const bool blocks = front || (!near && !incident);
     if (!blocks)
     {

@@ -20,8 +20,8 @@
  * vtkApertureRayPacket.
  *
  * The rules all casters share. A ray from a receiving point starts Offset above it along its
- * normal, but is traced from PullBack offsets behind that start; hits up to NearZone offsets
- * from where it is traced are near. A hit
+ * normal, but is traced from PullBack offsets behind that start; hits up to the point's Near
+ * distance from where it is traced are near. A hit
  *
  * - near blocks the ray only if the ray goes into the triangle's front: a point lying on another
  *   surface (the foot of a wall standing on the ground) is closed by that surface's front (the
@@ -34,7 +34,7 @@
  * Embree calls an occlusion filter for every hit it finds on a geometry that has one, which
  * costs on every occluded ray. Only where the rules can reject a hit do triangles get it: those
  * whose normal is within acos(PullBack) of 90 degrees from, or against, the normal of a
- * receiving point at one of their vertices, and those that pass within NearZone offsets of some
+ * receiving point at one of their vertices, and those that pass within the Near distance of some
  * receiving point's ray start. Every other hit blocks, and those triangles are a geometry
  * without a filter.
  */
@@ -68,10 +68,14 @@ public:
   vtkApertureRayScene& operator=(const vtkApertureRayScene&) = delete;
 
   ///@{
-  /// Rays are traced from PullBack offsets behind their start; hits up to NearZone offsets from
-  /// where they are traced (so up to NearZone - PullBack offsets beyond the start) are near.
+  /// Rays are traced from PullBack offsets behind their start. Hits up to a point's Near
+  /// distance from there are near: NearZone offsets, or ContactTolerance of the mean length of
+  /// its vertex's edges, whichever is more (vtkApertureSurface::SetRayOffset()). The tolerance
+  /// takes a scan's vertex that reconstruction left a hair under its neighbour's triangle for a
+  /// point on the surface, as it is.
   static constexpr float PullBack = 0.25f;
   static constexpr float NearZone = 2.0f;
+  static constexpr float ContactTolerance = 0.05f;
   ///@}
 
   /// Embree's acceleration structures.

@@ -12,6 +12,7 @@
 
 #include "vtkApertureCellCheck.h"
 #include "vtkApertureRaySampler.h"
+#include "vtkApertureRayScene.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -140,17 +141,18 @@ struct vtkApertureSurface::Build
   vtkApertureSurface& S;
   vtkPolyData* Input;
   vtkIdType N;
-  std::vector<double> World;               // input points, 3 each
-  std::vector<unsigned char> Finite;       // per input point
-  std::vector<std::uint32_t> VertexOf;     // per input point (NoVertex when not finite)
-  std::vector<vtkIdType> VertexInput;      // an input point of each vertex
-  std::vector<unsigned char> OnSurface;    // input point used by a polygon or strip
-  std::vector<vtkIdType> TriInput;         // every triangle's input points, 3 each
-  std::vector<vtkIdType> TriCell;          // its polygon or strip
-  std::vector<vtkIdType> TriCorner;        // the connectivity index of each corner
-  std::vector<vtkIdType> TriPoint;         // the receiving point of each corner (-1: none)
-  std::vector<vtkIdType> Geometry;         // triangles with three distinct vertices
-  std::vector<double> FaceNormals;         // unit (or zero) normal of each geometry triangle
+  std::vector<double> World;            // input points, 3 each
+  std::vector<unsigned char> Finite;    // per input point
+  std::vector<std::uint32_t> VertexOf;  // per input point (NoVertex when not finite)
+  std::vector<vtkIdType> VertexInput;   // an input point of each vertex
+  std::vector<unsigned char> OnSurface; // input point used by a polygon or strip
+  std::vector<vtkIdType> TriInput;      // every triangle's input points, 3 each
+  std::vector<vtkIdType> TriCell;       // its polygon or strip
+  std::vector<vtkIdType> TriCorner;     // the connectivity index of each corner
+  std::vector<vtkIdType> TriPoint;      // the receiving point of each corner (-1: none)
+  std::vector<vtkIdType> Geometry;      // triangles with three distinct vertices
+  std::vector<double> FaceNormals;      // unit (or zero) normal of each geometry triangle
+  std::vector<double> FaceAreas;
   std::vector<vtkIdType> IncidentStart;    // per vertex, into Incident
   std::vector<vtkIdType> Incident;         // 3 * geometry triangle + corner
   std::vector<vtkIdType> VertexFirstPoint; // each vertex's first receiving point (-1: none)
@@ -178,6 +180,9 @@ struct vtkApertureSurface::Build
   void ComputeFaceNormals();
   void FindIncident();
   void SidesFromCreases(double cosAngle);
+  void MakeSidePoints(vtkIdType v, const std::vector<std::array<double, 3>>& sums,
+    const std::vector<double>& areas, const double vertexNormal[3], double total,
+    std::vector<vtkIdType>& pointOfSide);
   void SidesFromNormals(vtkDataArray* normals, double cosAngle);
   vtkIdType AddPoint(vtkIdType vertex, unsigned int side, const double normal[3]);
   void MapInputPoints();
@@ -453,6 +458,7 @@ void vtkApertureSurface::Build::Orient()
 void vtkApertureSurface::Build::ComputeFaceNormals()
 {
   this->FaceNormals.assign(3 * this->Geometry.size(), 0.0);
+  this->FaceAreas.assign(this->Geometry.size(), 0.0);
   for (size_t g = 0; g < this->Geometry.size(); ++g)
   {
     double p[3][3];
@@ -465,7 +471,9 @@ void vtkApertureSurface::Build::ComputeFaceNormals()
     const double e2[3] = { p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2] };
     double* n = &this->FaceNormals[3 * g];
     vtkMath::Cross(e1, e2, n);
-    if (!(vtkMath::Normalize(n) > 0.0))
+    const double length = vtkMath::Normalize(n);
+    this->FaceAreas[g] = length > 0.0 ? 0.5 * length : 0.0;
+    if (!(length > 0.0))
     {
       std::fill(n, n + 3, 0.0); // zero area: no direction
     }
@@ -530,6 +538,7 @@ void vtkApertureSurface::Build::SidesFromCreases(double cosAngle)
   std::vector<std::pair<vtkIdType, int>> keyed;
   std::vector<int> rootOf, sideOfRoot;
   std::vector<std::array<double, 3>> sums;
+  std::vector<double> areas;
   std::vector<vtkIdType> pointOfSide;
   for (vtkIdType v = 0; v + 1 < static_cast<vtkIdType>(this->IncidentStart.size()); ++v)
   {
@@ -571,10 +580,12 @@ void vtkApertureSurface::Build::SidesFromCreases(double cosAngle)
         }
       }
     }
-    // One receiving point per side with a direction; sides without one join the first that has.
+    // The sides: their sums of unit normals and their areas.
     rootOf.resize(m);
     sums.clear();
+    areas.clear();
     sideOfRoot.assign(m, -1);
+    double vertexNormal[3] = { 0.0, 0.0, 0.0 }, total = 0.0;
     for (int i = 0; i < m; ++i)
     {
       const int root = classes.Find(i);
@@ -582,31 +593,60 @@ void vtkApertureSurface::Build::SidesFromCreases(double cosAngle)
       {
         sideOfRoot[root] = static_cast<int>(sums.size());
         sums.push_back({ 0.0, 0.0, 0.0 });
+        areas.push_back(0.0);
       }
       rootOf[i] = sideOfRoot[root];
       const double* n = &this->FaceNormals[corners[i] / 3 * 3];
+      const double area = this->FaceAreas[corners[i] / 3];
       for (int k = 0; k < 3; ++k)
       {
         sums[rootOf[i]][k] += n[k];
+        vertexNormal[k] += area * n[k];
       }
+      areas[rootOf[i]] += area;
+      total += area;
     }
-    pointOfSide.assign(sums.size(), -1);
-    unsigned int ordinal = 0;
-    for (size_t s = 0; s < sums.size(); ++s)
-    {
-      if (vtkMath::Dot(sums[s].data(), sums[s].data()) > 0.0)
-      {
-        pointOfSide[s] = this->AddPoint(v, ordinal++, sums[s].data());
-      }
-    }
-    const double none[3] = { 0.0, 0.0, 0.0 };
-    const vtkIdType fallback =
-      this->VertexFirstPoint[v] >= 0 ? this->VertexFirstPoint[v] : this->AddPoint(v, ordinal, none);
+    this->MakeSidePoints(v, sums, areas, vertexNormal, total, pointOfSide);
     for (int i = 0; i < m; ++i)
     {
-      const vtkIdType point = pointOfSide[rootOf[i]];
-      this->TriPoint[3 * triangle(i) + corners[i] % 3] = point >= 0 ? point : fallback;
+      this->TriPoint[3 * triangle(i) + corners[i] % 3] = pointOfSide[rootOf[i]];
     }
+  }
+}
+
+//------------------------------------------------------------------------------
+// One receiving point per side of a vertex, but a side without a direction, or a fold (a small
+// side facing against a clearly oriented vertex: a scan's folded triangle, not a crease), joins
+// the vertex's largest side.
+void vtkApertureSurface::Build::MakeSidePoints(vtkIdType v,
+  const std::vector<std::array<double, 3>>& sums, const std::vector<double>& areas,
+  const double vertexNormal[3], double total, std::vector<vtkIdType>& pointOfSide)
+{
+  const size_t largest = std::max_element(areas.begin(), areas.end()) - areas.begin();
+  const bool oriented = vtkMath::Norm(vertexNormal) > 0.5 * total;
+  auto joins = [&](size_t s)
+  {
+    const bool fold = oriented && s != largest && areas[s] < 0.25 * total &&
+      vtkMath::Dot(sums[s].data(), vertexNormal) < 0.0;
+    return fold || !(vtkMath::Dot(sums[s].data(), sums[s].data()) > 0.0);
+  };
+  pointOfSide.assign(sums.size(), -1);
+  unsigned int ordinal = 0;
+  for (size_t s = 0; s < sums.size(); ++s)
+  {
+    if (!joins(s))
+    {
+      pointOfSide[s] = this->AddPoint(v, ordinal++, sums[s].data());
+    }
+  }
+  const double none[3] = { 0.0, 0.0, 0.0 };
+  const vtkIdType fallback = pointOfSide[largest] >= 0
+    ? pointOfSide[largest]
+    : (this->VertexFirstPoint[v] >= 0 ? this->VertexFirstPoint[v]
+                                      : this->AddPoint(v, ordinal, none));
+  for (vtkIdType& point : pointOfSide)
+  {
+    point = point >= 0 ? point : fallback;
   }
 }
 
@@ -1042,6 +1082,7 @@ void vtkApertureSurface::SetRayOffset(double rayOffset)
   }
   this->Offset.resize(n);
   this->Start.resize(3 * n);
+  this->Near.resize(n);
   for (vtkIdType i = 0; i < n; ++i)
   {
     const float* p = this->GetPosition(i);
@@ -1068,6 +1109,8 @@ void vtkApertureSurface::SetRayOffset(double rayOffset)
       std::sqrt(shift[0] * shift[0] + shift[1] * shift[1] + shift[2] * shift[2]);
     const double limit = length > lift ? lift / length : 1.0;
     this->Offset[i] = lift;
+    this->Near[i] =
+      std::max(vtkApertureRayScene::NearZone * lift, vtkApertureRayScene::ContactTolerance * edge);
     for (int c = 0; c < 3; ++c)
     {
       this->Start[3 * i + c] = static_cast<float>(p[c] + lift * normal[c] + limit * shift[c]);

@@ -159,13 +159,15 @@ public:
   /// defined, and a key from the vertex's world position and the side, on which their rays
   /// depend (so that welded and unwelded copies of a mesh, or a leaf run alone or in a scene,
   /// get the same). SetRayOffset() sets where their rays start: Start (3 local coordinates
-  /// each), Offset above the point.
+  /// each), Offset above the point, and how far from where they are traced hits are near (Near,
+  /// see vtkApertureRayScene).
   std::vector<std::uint32_t> PointVertex;
   vtkSmartPointer<vtkFloatArray> Normals;
   std::vector<unsigned char> Valid;
   std::vector<std::uint64_t> Key;
   std::vector<float> Offset;
   std::vector<float> Start;
+  std::vector<float> Near;
   ///@}
 
   /// The receiving point of each corner of Triangles (3 per triangle).
