@@ -433,6 +433,7 @@ bool vtkAperturePrecompute::vtkRun::Cast()
   {
     casting += r->Surface.GetNumberOfPoints();
   }
+  self->NumberOfSurfacePoints = casting;
   vtkIdType done = 0;
   self->UpdateProgress(0.0);
   for (const auto& r : this->Receivers)
@@ -591,6 +592,7 @@ int vtkAperturePrecompute::RequestData(
 {
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
   vtkDataObject* output = vtkDataObject::GetData(outputVector, 0);
+  this->NumberOfSurfacePoints = 0;
   if (!input || !output)
   {
     vtkErrorMacro("Missing input or output.");
@@ -635,4 +637,5 @@ void vtkAperturePrecompute::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AccelerationStructure: " << structures[this->AccelerationStructure] << "\n";
   os << indent << "EmbreeConfiguration: " << this->EmbreeConfiguration << "\n";
   os << indent << "NumberOfOccluders: " << this->GetNumberOfInputConnections(1) << "\n";
+  os << indent << "NumberOfSurfacePoints: " << this->NumberOfSurfacePoints << "\n";
 }

@@ -224,6 +224,12 @@ public:
   vtkGetCharFromStdStringMacro(EmbreeConfiguration);
   ///@}
 
+  /**
+   * The surface points that cast rays in the last update, NumberOfRays each: one per position
+   * and side of a crease (points welded together cast once), or per texel.
+   */
+  vtkGetMacro(NumberOfSurfacePoints, vtkIdType);
+
 protected:
   vtkAperturePrecompute();
   ~vtkAperturePrecompute() override;
@@ -242,6 +248,7 @@ protected:
   double FeatureAngle = 60.0;
   double MaximumEdgeLength = 0.0;
   int AccelerationStructure = AUTOMATIC;
+  vtkIdType NumberOfSurfacePoints = 0;
   std::string BentNormalArrayName = "BentNormal";
   std::string ApertureRadiusArrayName = "ApertureRadius";
   std::string AmbientOcclusionArrayName = "AmbientOcclusion";

@@ -20,6 +20,7 @@
 #include "vtkOpenGLVertexBufferObject.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 
 #include <string>
@@ -55,6 +56,18 @@ bool vtkApertureLightingMapper::CheckCells(vtkPolyData* input)
     }
   }
   return this->CellsGood;
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingMapper::ComputeBounds()
+{
+  vtkPolyData* input = this->GetInput();
+  if (this->CheckCells(input))
+  {
+    this->Superclass::ComputeBounds();
+    return;
+  }
+  input->GetPoints()->GetBounds(this->Bounds);
 }
 
 //------------------------------------------------------------------------------

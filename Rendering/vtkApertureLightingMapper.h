@@ -151,6 +151,8 @@ protected:
   ~vtkApertureLightingMapper() override = default;
 
   void RenderPiece(vtkRenderer* renderer, vtkActor* actor) override;
+  // VTK's bounds read through the cells' point ids: bad ones give the points' bounds.
+  void ComputeBounds() override;
   void RenderPieceFinish(vtkRenderer* renderer, vtkActor* actor) override;
   bool GetNeedToRebuildShaders(
     vtkOpenGLHelper& cellBO, vtkRenderer* renderer, vtkActor* actor) override;

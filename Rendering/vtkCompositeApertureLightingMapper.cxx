@@ -11,8 +11,10 @@
 #include "vtkCompositeApertureLightingMapper.h"
 
 #include "vtkApertureCellCheck.h"
+#include "vtkBoundingBox.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 
 #include "vtkApertureLightingInterface.h"
@@ -65,6 +67,28 @@ bool vtkCompositeApertureLightingMapper::CheckCells()
     check(vtkPolyData::SafeDownCast(input), 0);
   }
   return this->CellsGood;
+}
+
+//------------------------------------------------------------------------------
+void vtkCompositeApertureLightingMapper::ComputeBounds()
+{
+  if (this->CheckCells())
+  {
+    this->Superclass::ComputeBounds();
+    return;
+  }
+  vtkBoundingBox box;
+  auto* composite = vtkCompositeDataSet::SafeDownCast(this->GetInputDataObject(0, 0));
+  auto it = vtk::TakeSmartPointer(composite ? composite->NewIterator() : nullptr);
+  for (it ? it->InitTraversal() : void(); it && !it->IsDoneWithTraversal(); it->GoToNextItem())
+  {
+    auto* block = vtkPolyData::SafeDownCast(it->GetCurrentDataObject());
+    if (block && block->GetPoints())
+    {
+      box.AddBounds(block->GetPoints()->GetBounds());
+    }
+  }
+  box.GetBounds(this->Bounds);
 }
 
 //------------------------------------------------------------------------------

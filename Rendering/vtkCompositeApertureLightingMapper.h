@@ -57,6 +57,8 @@ protected:
   ~vtkCompositeApertureLightingMapper() override;
 
   vtkCompositeMapperHelper2* CreateHelper() override;
+  // VTK's bounds read through the cells' point ids: bad ones give the points' bounds.
+  void ComputeBounds() override;
   void CopyMapperValuesToHelper(vtkCompositeMapperHelper2* helper) override;
 
   vtkNew<vtkApertureLightingInterface> Lighting;
