@@ -16,6 +16,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkImageData.h"
@@ -157,6 +158,7 @@ struct vtkApertureSurface::Build
   std::vector<vtkIdType> Incident;         // 3 * geometry triangle + corner
   std::vector<vtkIdType> VertexFirstPoint; // each vertex's first receiving point (-1: none)
   vtkIdType Corners = 0;                   // polygon corners, then strip corners
+  vtkIdType Polygons = 0;                  // cells before the first strip
 
   Build(vtkApertureSurface& surface, vtkPolyData* input)
     : S(surface)
@@ -256,6 +258,7 @@ void vtkApertureSurface::Build::Triangulate()
   this->OnSurface.assign(this->N, 0);
   std::vector<vtkIdType> local;
   vtkIdType cell = 0;
+  this->Polygons = this->Input->GetNumberOfPolys();
   for (vtkCellArray* cells : { this->Input->GetPolys(), this->Input->GetStrips() })
   {
     const bool strip = cells == this->Input->GetStrips();
@@ -544,12 +547,18 @@ void vtkApertureSurface::Build::SidesFromCreases(double cosAngle)
   {
     const vtkIdType* corners = &this->Incident[this->IncidentStart[v]];
     const int m = static_cast<int>(this->IncidentStart[v + 1] - this->IncidentStart[v]);
+    if (m == 0)
+    {
+      continue; // in no triangle: its points are on no surface, or only in degenerate cells
+    }
     classes.Reset(m);
     auto triangle = [&](int i) { return this->Geometry[corners[i] / 3]; };
     keyed.clear();
     for (int i = 0; i < m; ++i)
     {
-      keyed.emplace_back(this->TriCell[triangle(i)], i);
+      // Polygons are one face each; a strip's triangles are faces of their own.
+      const vtkIdType cell = this->TriCell[triangle(i)];
+      keyed.emplace_back(cell < this->Polygons ? cell : -1 - i, i);
     }
     std::sort(keyed.begin(), keyed.end());
     for (int i = 1; i < m; ++i)
@@ -630,9 +639,25 @@ void vtkApertureSurface::Build::MakeSidePoints(vtkIdType v,
       vtkMath::Dot(sums[s].data(), vertexNormal) < 0.0;
     return fold || !(vtkMath::Dot(sums[s].data(), sums[s].data()) > 0.0);
   };
+  // The sides in the order of their directions, whatever the order of the triangles, so that
+  // the same surface in another cell order (strips, triangles) casts the same rays.
+  std::vector<size_t> order(sums.size());
+  std::iota(order.begin(), order.end(), 0);
+  auto direction = [&sums](size_t s)
+  {
+    const double length = vtkMath::Norm(sums[s].data());
+    std::array<double, 3> d;
+    for (int k = 0; k < 3; ++k)
+    {
+      d[k] = length > 0.0 ? std::round(1e6 * sums[s][k] / length) : 0.0;
+    }
+    return d;
+  };
+  std::sort(order.begin(), order.end(),
+    [&direction](size_t a, size_t b) { return direction(a) < direction(b); });
   pointOfSide.assign(sums.size(), -1);
   unsigned int ordinal = 0;
-  for (size_t s = 0; s < sums.size(); ++s)
+  for (const size_t s : order)
   {
     if (!joins(s))
     {
@@ -664,6 +689,10 @@ void vtkApertureSurface::Build::SidesFromNormals(vtkDataArray* normals, double c
     {
       const vtkIdType corner = this->Incident[c];
       members.push_back(this->TriInput[3 * this->Geometry[corner / 3] + corner % 3]);
+    }
+    if (members.empty())
+    {
+      continue;
     }
     std::sort(members.begin(), members.end());
     members.erase(std::unique(members.begin(), members.end()), members.end());
@@ -719,16 +748,17 @@ void vtkApertureSurface::Build::SidesFromNormals(vtkDataArray* normals, double c
 }
 
 //------------------------------------------------------------------------------
-// Each input point's receiving point (its first corner's), the corners' for MakeOutput(), and
-// the geometry for Embree.
+// Each input point's receiving point (the first of its corners'), the corners' for MakeOutput(),
+// and the geometry for Embree.
 void vtkApertureSurface::Build::MapInputPoints()
 {
   std::vector<vtkIdType>& map = this->S.InputPoints;
   map.assign(this->N, NotOnSurface);
   for (size_t c = 0; c < this->TriPoint.size(); ++c)
   {
+    // The first of its sides, in their order.
     const vtkIdType i = this->TriInput[c];
-    if (this->TriPoint[c] >= 0 && map[i] == NotOnSurface)
+    if (this->TriPoint[c] >= 0 && (map[i] == NotOnSurface || this->TriPoint[c] < map[i]))
     {
       map[i] = this->TriPoint[c];
     }
@@ -757,11 +787,16 @@ void vtkApertureSurface::Build::MapInputPoints()
       ++this->S.UndefinedNormals;
     }
   }
-  // The cells' corners, and whether any of them splits its point.
+  // The cells' corners, and whether any of them splits its point or, in a strip, has triangles
+  // on different sides (the strip is then broken into triangles).
   std::vector<vtkIdType> corners(this->Corners, -1);
   for (size_t c = 0; c < this->TriPoint.size(); ++c)
   {
-    corners[this->TriCorner[c]] = this->TriPoint[c];
+    const vtkIdType at = this->TriCorner[c];
+    const bool disagree =
+      corners[at] >= 0 && this->TriPoint[c] >= 0 && corners[at] != this->TriPoint[c];
+    this->S.BreakStrips = this->S.BreakStrips || disagree;
+    corners[at] = corners[at] >= 0 ? corners[at] : this->TriPoint[c];
   }
   const vtkIdType polyCorners = this->Input->GetPolys()->GetNumberOfConnectivityIds();
   std::vector<unsigned char> split(this->N, 0);
@@ -782,10 +817,29 @@ void vtkApertureSurface::Build::MapInputPoints()
     }
   }
   this->S.SplitPoints = std::count(split.begin(), split.end(), 1);
-  if (this->S.SplitPoints > 0)
+  if (this->S.SplitPoints > 0 || this->S.BreakStrips)
   {
     this->S.PolyCorners.assign(corners.begin(), corners.begin() + polyCorners);
     this->S.StripCorners.assign(corners.begin() + polyCorners, corners.end());
+  }
+  if (this->S.BreakStrips)
+  {
+    // Each strip triangle with three distinct points, with its strip and its corners' points.
+    for (size_t t = 0; t < this->TriCell.size(); ++t)
+    {
+      const vtkIdType* in = &this->TriInput[3 * t];
+      if (this->TriCell[t] < this->Polygons || in[0] == in[1] || in[1] == in[2] || in[0] == in[2])
+      {
+        continue;
+      }
+      this->S.StripTriangles.push_back(this->TriCell[t] - this->Polygons);
+      for (int k = 0; k < 3; ++k)
+      {
+        this->S.StripTriangles.push_back(in[k]);
+        this->S.StripTriangles.push_back(
+          this->TriPoint[3 * t + k] >= 0 ? this->TriPoint[3 * t + k] : map[in[k]]);
+      }
+    }
   }
 
   for (const vtkIdType t : this->Geometry)
@@ -874,11 +928,13 @@ void vtkApertureSurface::Allocate(vtkIdType inputPoints)
   this->InputPoints.assign(inputPoints, NotOnSurface);
   this->PolyCorners.clear();
   this->StripCorners.clear();
+  this->StripTriangles.clear();
   this->NormalsComputed = false;
   this->NonFinitePoints = 0;
   this->UndefinedNormals = 0;
   this->FlippedNormals = 0;
   this->SplitPoints = 0;
+  this->BreakStrips = false;
 }
 
 //------------------------------------------------------------------------------
@@ -1168,7 +1224,7 @@ void vtkApertureSurface::MakeOutput(
 {
   output->ShallowCopy(input);
   outputPoints = this->InputPoints;
-  if (this->SplitPoints == 0)
+  if (this->SplitPoints == 0 && !this->BreakStrips)
   {
     return;
   }
@@ -1176,6 +1232,22 @@ void vtkApertureSurface::MakeOutput(
   const vtkIdType n = input->GetNumberOfPoints();
   std::unordered_map<std::uint64_t, vtkIdType> added;
   vtkNew<vtkIdList> from, to;
+  auto outputPoint = [&](vtkIdType id, vtkIdType point)
+  {
+    if (point == this->InputPoints[id] || point < 0)
+    {
+      return id;
+    }
+    const std::uint64_t key = static_cast<std::uint64_t>(id) << 32 | std::uint64_t(point);
+    auto inserted = added.emplace(key, n + static_cast<vtkIdType>(added.size()));
+    if (inserted.second)
+    {
+      from->InsertNextId(id);
+      to->InsertNextId(inserted.first->second);
+      outputPoints.push_back(point);
+    }
+    return inserted.first->second;
+  };
   auto renumber = [&](vtkCellArray* cells, const std::vector<vtkIdType>& corners)
   {
     auto result = vtkSmartPointer<vtkCellArray>::New();
@@ -1190,27 +1262,31 @@ void vtkApertureSurface::MakeOutput(
       renumbered.assign(ids, ids + npts);
       for (vtkIdType k = 0; k < npts; ++k, ++c)
       {
-        const vtkIdType point = corners[c];
-        if (point == this->InputPoints[ids[k]])
-        {
-          continue;
-        }
-        const std::uint64_t key = static_cast<std::uint64_t>(ids[k]) << 32 | std::uint64_t(point);
-        auto inserted = added.emplace(key, n + static_cast<vtkIdType>(added.size()));
-        if (inserted.second)
-        {
-          from->InsertNextId(ids[k]);
-          to->InsertNextId(inserted.first->second);
-          outputPoints.push_back(point);
-        }
-        renumbered[k] = inserted.first->second;
+        renumbered[k] = outputPoint(ids[k], corners[c]);
       }
       result->ReplaceCellAtId(cell, npts, renumbered.data());
     }
     return result;
   };
-  output->SetPolys(renumber(input->GetPolys(), this->PolyCorners));
-  output->SetStrips(renumber(input->GetStrips(), this->StripCorners));
+  vtkSmartPointer<vtkCellArray> polys = renumber(input->GetPolys(), this->PolyCorners);
+  if (this->BreakStrips)
+  {
+    // Strips crossing a crease become their triangles, after the polygons.
+    for (size_t t = 0; t < this->StripTriangles.size(); t += 7)
+    {
+      const vtkIdType* triangle = &this->StripTriangles[t + 1];
+      const vtkIdType ids[3] = { outputPoint(triangle[0], triangle[1]),
+        outputPoint(triangle[2], triangle[3]), outputPoint(triangle[4], triangle[5]) };
+      polys->InsertNextCell(3, ids);
+    }
+    output->SetStrips(vtkSmartPointer<vtkCellArray>::New());
+    this->BrokenStripData(input, output);
+  }
+  else
+  {
+    output->SetStrips(renumber(input->GetStrips(), this->StripCorners));
+  }
+  output->SetPolys(polys);
 
   // The new points copy their originals, with all their data.
   const vtkIdType total = n + from->GetNumberOfIds();
@@ -1232,6 +1308,25 @@ void vtkApertureSurface::MakeOutput(
   pd->CopyData(input->GetPointData(), 0, n, 0);
   pd->CopyData(input->GetPointData(), from, to);
   output->GetPointData()->ShallowCopy(pd);
+}
+
+//------------------------------------------------------------------------------
+// Cell data when strips became triangles: vertices, lines and polygons as they were, then each
+// strip's data on each of its triangles.
+void vtkApertureSurface::BrokenStripData(vtkPolyData* input, vtkPolyData* output) const
+{
+  const vtkIdType before =
+    input->GetNumberOfVerts() + input->GetNumberOfLines() + input->GetNumberOfPolys();
+  const vtkIdType triangles = static_cast<vtkIdType>(this->StripTriangles.size() / 7);
+  vtkNew<vtkCellData> cd;
+  cd->CopyAllOn(vtkDataSetAttributes::COPYTUPLE);
+  cd->CopyAllocate(input->GetCellData(), before + triangles);
+  cd->CopyData(input->GetCellData(), 0, before, 0);
+  for (vtkIdType t = 0; t < triangles; ++t)
+  {
+    cd->CopyData(input->GetCellData(), before + this->StripTriangles[7 * t], before + t);
+  }
+  output->GetCellData()->ShallowCopy(cd);
 }
 
 //------------------------------------------------------------------------------

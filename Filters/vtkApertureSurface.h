@@ -99,7 +99,9 @@ public:
   /**
    * Writes in `output` the input with the points that creases split duplicated (their point
    * data copied) and the cells that use them renumbered; `outputPoints` gets each output point's
-   * receiving point (or NotOnSurface, Invalid). Without splits the output is a shallow copy.
+   * receiving point (or NotOnSurface, Invalid). When a crease runs across a triangle strip, the
+   * strips become triangles (after the polygons, each with its strip's cell data), as
+   * vtkPolyDataNormals does. Without splits the output is a shallow copy.
    */
   void MakeOutput(
     vtkPolyData* input, vtkPolyData* output, std::vector<vtkIdType>& outputPoints) const;
@@ -197,6 +199,9 @@ public:
   vtkIdType SplitPoints = 0;
   ///@}
 
+  /// Whether a crease runs across a strip (MakeOutput() then makes the strips triangles).
+  bool BreakStrips = false;
+
 private:
   struct Build;
   friend struct Build;
@@ -209,9 +214,13 @@ private:
   // FlippedNormals: given normals against their triangles' winding.
   void CountFlippedNormals();
 
+  // Cell data of MakeOutput() when strips become triangles.
+  void BrokenStripData(vtkPolyData* input, vtkPolyData* output) const;
+
   // For MakeOutput(), when points are split: the receiving point of each corner of the input's
-  // polygons and of its strips, in connectivity order.
-  std::vector<vtkIdType> PolyCorners, StripCorners;
+  // polygons and of its strips, in connectivity order; and when strips break, their triangles
+  // (strip, then input point and receiving point of each corner: 7 values each).
+  std::vector<vtkIdType> PolyCorners, StripCorners, StripTriangles;
 };
 
 #endif

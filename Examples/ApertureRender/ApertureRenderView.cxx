@@ -26,6 +26,7 @@
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkEnvironmentMap.h"
+#include "vtkIdList.h"
 #include "vtkImageAppend.h"
 #include "vtkImageData.h"
 #include "vtkImageDataGeometryFilter.h"
@@ -35,6 +36,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPNGWriter.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataNormals.h"
 #include "vtkProperty.h"
@@ -68,39 +70,48 @@ double Radians(double degrees)
   return vtkMath::RadiansFromDegrees(degrees);
 }
 
-// The surface without the cells that use points that are not finite.
+// The surface without its points that are not finite, nor the cells that use them: VTK's vertex
+// buffers scale their coordinates by the points' range, which one infinite point makes useless.
 vtkSmartPointer<vtkPolyData> FiniteCells(vtkPolyData* surface)
 {
   vtkPoints* points = surface->GetPoints();
-  auto finite = [points](vtkIdType npts, const vtkIdType* ids)
+  std::vector<vtkIdType> kept(surface->GetNumberOfPoints(), -1);
+  vtkNew<vtkPoints> finite;
+  vtkNew<vtkIdList> from, to;
+  for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i)
   {
-    for (vtkIdType k = 0; k < npts; ++k)
+    const double* p = points->GetPoint(i);
+    if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))
     {
-      const double* p = points->GetPoint(ids[k]);
-      if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
-      {
-        return false;
-      }
+      kept[i] = finite->InsertNextPoint(p);
+      from->InsertNextId(i);
+      to->InsertNextId(kept[i]);
     }
-    return true;
-  };
+  }
   auto keep = [&](vtkCellArray* cells)
   {
-    auto kept = vtkSmartPointer<vtkCellArray>::New();
+    auto result = vtkSmartPointer<vtkCellArray>::New();
     vtkIdType npts;
     const vtkIdType* ids;
+    std::vector<vtkIdType> renumbered;
     for (cells->InitTraversal(); cells->GetNextCell(npts, ids);)
     {
-      if (finite(npts, ids))
+      renumbered.clear();
+      for (vtkIdType k = 0; k < npts && kept[ids[k]] >= 0; ++k)
       {
-        kept->InsertNextCell(npts, ids);
+        renumbered.push_back(kept[ids[k]]);
+      }
+      if (static_cast<vtkIdType>(renumbered.size()) == npts)
+      {
+        result->InsertNextCell(npts, renumbered.data());
       }
     }
-    return kept;
+    return result;
   };
   auto drawn = vtkSmartPointer<vtkPolyData>::New();
-  drawn->SetPoints(points);
-  drawn->GetPointData()->ShallowCopy(surface->GetPointData());
+  drawn->SetPoints(finite);
+  drawn->GetPointData()->CopyAllocate(surface->GetPointData(), finite->GetNumberOfPoints());
+  drawn->GetPointData()->CopyData(surface->GetPointData(), from, to);
   drawn->SetVerts(keep(surface->GetVerts()));
   drawn->SetLines(keep(surface->GetLines()));
   drawn->SetPolys(keep(surface->GetPolys()));

@@ -41,6 +41,7 @@
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
+#include "vtkIntArray.h"
 #include "vtkMath.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
@@ -52,6 +53,7 @@
 #include "vtkPolyDataNormals.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkStripper.h"
 #include "vtkTestErrorObserver.h"
 #include "vtkTestUtilities.h"
 #include "vtkTriangle.h"
@@ -89,7 +91,15 @@ struct Result
   vtkIdType SurfacePoints = 0; // precompute only
 };
 
-// Runs a caster on `input` (and occluders); the visible fraction of every output point.
+// The sentence of an error message (after "ClassName (address): ", up to its line's end).
+std::string Sentence(const std::string& message)
+{
+  const size_t start = message.find("): ");
+  const size_t begin = start == std::string::npos ? 0 : start + 3;
+  return message.substr(begin, message.find('\n', begin) - begin);
+}
+
+// Runs a caster on `input`; the visible fraction of every output point.
 Result Run(Caster caster, vtkPolyData* input, int rays = 256, double featureAngle = 60.0,
   double maximumEdge = 0.0)
 {
@@ -124,7 +134,7 @@ Result Run(Caster caster, vtkPolyData* input, int rays = 256, double featureAngl
   filter->AddObserver(vtkCommand::ErrorEvent, errors);
   filter->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, errors);
   result.Ok = filter->GetExecutive()->Update() != 0;
-  result.Error = errors->GetError() ? errors->GetErrorMessage() : std::string();
+  result.Error = errors->GetError() ? Sentence(errors->GetErrorMessage()) : std::string();
   if (!result.Ok)
   {
     return result;
@@ -322,7 +332,7 @@ void TestBadPointIds()
     {
       const Result r = Run(caster, bad, 16);
       const std::string what = std::string(CasterNames[caster]) + ", " + c.What;
-      std::cout << what << ": " << r.Error;
+      std::cout << what << ": " << r.Error << "\n";
       Check(!r.Ok && r.Error.find("polygon 200") != std::string::npos &&
           r.Error.find("uses point id") != std::string::npos,
         what + ": an error naming the first bad cell");
@@ -375,7 +385,7 @@ void TestBadPointIds()
     renderer->AddActor(actor);
     window->Render();
     renderer->RemoveActor(actor);
-    std::cout << mapper->GetClassName() << ": " << errors->GetErrorMessage();
+    std::cout << mapper->GetClassName() << ": " << Sentence(errors->GetErrorMessage()) << "\n";
     Check(
       errors->GetError() && errors->GetErrorMessage().find("uses point id") != std::string::npos,
       std::string(mapper->GetClassName()) + " refuses cells with bad point ids");
@@ -525,6 +535,30 @@ void TestCreases(vtkPolyData* bunny)
     }
     Check(least > 0.99, what + ": every face of a convex part sees its hemisphere", least, 1.0);
   }
+
+  // Strips that run across a crease (the shared box as strips) become triangles, each with its
+  // strip's cell data, as vtkPolyDataNormals does.
+  vtkNew<vtkStripper> stripper;
+  stripper->SetInputData(box);
+  stripper->Update();
+  vtkNew<vtkPolyData> stripped;
+  stripped->DeepCopy(stripper->GetOutput());
+  vtkNew<vtkIntArray> stripId;
+  stripId->SetName("StripId");
+  for (vtkIdType c = 0; c < stripped->GetNumberOfCells(); ++c)
+  {
+    stripId->InsertNextValue(static_cast<int>(c));
+  }
+  stripped->GetCellData()->AddArray(stripId);
+  const Result fromStrips = Run(PRECOMPUTE, stripped, 64);
+  vtkDataArray* ids = fromStrips.Output->GetCellData()->GetArray("StripId");
+  std::cout << "box as " << stripped->GetNumberOfStrips()
+            << " strips: " << fromStrips.Output->GetNumberOfPolys() << " triangles, "
+            << fromStrips.Output->GetNumberOfStrips() << " strips out\n";
+  Check(fromStrips.Output->GetNumberOfStrips() == 0 &&
+      fromStrips.Output->GetNumberOfPolys() == 12 && ids && ids->GetNumberOfTuples() == 12 &&
+      WorstFaceNormal(fromStrips.Output) < 0.01,
+    "strips across a crease become triangles with their strip's data and their faces' normals");
 
   // A tessellated cylinder with caps: the rim splits, the 32 facets stay smooth.
   vtkNew<vtkCylinderSource> cylinder;

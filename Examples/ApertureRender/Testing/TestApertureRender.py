@@ -15,8 +15,8 @@ import sys
 
 import numpy as np
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
-from vtkmodules.vtkCommonDataModel import vtkImageData
-from vtkmodules.vtkFiltersCore import vtkDelaunay3D
+from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPolyData
+from vtkmodules.vtkFiltersCore import vtkDelaunay3D, vtkStripper
 from vtkmodules.vtkFiltersSources import vtkCubeSource
 from vtkmodules.vtkIOGeometry import vtkOBJReader, vtkSTLWriter
 from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter, vtkTIFFWriter
@@ -254,6 +254,174 @@ ratio = lit["env-dark"][mask].mean() / lit["env-bright"][mask].mean()
 check(turned > 4, f"--env-azimuth 180 changes the shading (mean {turned:.1f} levels)")
 check(0.35 < ratio < 0.65, f"--env-exposure -1 against 0: {ratio:.2f} of the light (linear 0.5)")
 
+# Real files. A PLY scan stored as triangle strips (vtkPLYReader reads none): drawn, and the same
+# apertures as the triangles.
+stripper = vtkStripper()
+stripper.SetInputData(mesh)
+stripper.Update()
+strips = stripper.GetOutput()
+strip_ids = vtk_to_numpy(strips.GetStrips().GetConnectivityArray())
+strip_offsets = vtk_to_numpy(strips.GetStrips().GetOffsetsArray())
+restarted = []
+for a, b in zip(strip_offsets[:-1], strip_offsets[1:]):
+    restarted.extend(strip_ids[a:b].tolist() + [-1])
+xyz = vtk_to_numpy(strips.GetPoints().GetData()).astype("<f4")
+
+
+def strip_ply(name, binary):
+    header = ("ply\nformat %s 1.0\nelement vertex %d\nproperty float x\nproperty float y\n"
+              "property float z\nelement tristrips 1\nproperty list int int vertex_indices\n"
+              "end_header\n") % ("binary_little_endian" if binary else "ascii", len(xyz))
+    if binary:
+        body = xyz.tobytes() + struct.pack("<i", len(restarted)) + \
+            np.array(restarted, dtype="<i4").tobytes()
+    else:
+        body = ("\n".join(" ".join(repr(float(c)) for c in p) for p in xyz) + "\n" +
+                " ".join(str(v) for v in [len(restarted)] + restarted) + "\n").encode()
+    return write_bytes(name, header.encode() + body)
+
+
+triangles_saved = path("bunny-triangles.vtp")
+run(bunny, *FAST, "--save-data", triangles_saved, "-o", path("x.png"))
+for name, binary in (("bunny-strips.ply", True), ("bunny-strips-ascii.ply", False)):
+    saved_strips = path(name + ".vtp")
+    expect_picture(name, [strip_ply(name, binary), *FAST, "--save-data", saved_strips],
+                   needles=("triangle strips",))
+    # Points split at creases come in another order: matched by position and normal.
+    apertures = []
+    for saved_file in (triangles_saved, saved_strips):
+        r = vtkXMLPolyDataReader()
+        r.SetFileName(saved_file)
+        r.Update()
+        pd = r.GetOutput()
+        keys = np.hstack([vtk_to_numpy(pd.GetPoints().GetData()),
+                          np.round(vtk_to_numpy(pd.GetPointData().GetNormals()), 5)])
+        radius = vtk_to_numpy(pd.GetPointData().GetArray("ApertureRadius"))
+        apertures.append({tuple(k): v for k, v in zip(keys.tolist(), radius)})
+    same = (apertures[0].keys() == apertures[1].keys()
+            and max(abs(apertures[0][k] - apertures[1][k]) for k in apertures[0]) < 1e-6)
+    check(same, f"{name}: the apertures of the same triangles, point for point")
+
+# Points that are not finite: said in one line; the rest is drawn.
+polydata_reader = vtkXMLPolyDataReader()
+polydata_reader.SetFileName(path("bunny.vtp"))
+polydata_reader.Update()
+for value, name in ((float("inf"), "bunny-inf.vtp"), (float("nan"), "bunny-nan.vtp")):
+    broken_mesh = vtkPolyData()
+    broken_mesh.DeepCopy(polydata_reader.GetOutput())
+    broken_mesh.GetPoints().SetPoint(0, value, 0.0, 0.0)
+    vtp_writer = vtkXMLPolyDataWriter()
+    vtp_writer.SetInputData(broken_mesh)
+    vtp_writer.SetFileName(path(name))
+    vtp_writer.Write()
+    expect_picture(name, [path(name), *FAST], needles=("1 point(s) are not finite",))
+
+# Bad point ids: a clear line, exit 1, whatever reader took the file.
+expect_failure("OBJ face past the points",
+               [write_bytes("bad-face.obj", b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n"),
+                "-o", path("x.png")], 1, "uses point id")
+bad_ply = ("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+           "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+           "0 0 0\n1 0 0\n0 1 0\n3 0 1 500000\n")
+expect_failure("PLY face past the points", [write_bytes("bad-face.ply", bad_ply.encode()),
+                                            "-o", path("x.png")], 1, "uses vertex 500000")
+bad_binary = (b"ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+              b"property float y\nproperty float z\nelement face 1\n"
+              b"property list uchar int vertex_indices\nend_header\n" +
+              np.zeros(9, dtype="<f4").tobytes() + struct.pack("<Biii", 3, 0, -5, 1))
+expect_failure("binary PLY with a negative index",
+               [write_bytes("bad-binary.ply", bad_binary), "-o", path("x.png")], 1,
+               "uses vertex -5")
+legacy = (b"# vtk DataFile Version 3.0\nbad\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n"
+          b"0 0 0 1 0 0 0 1 0\nPOLYGONS 1 4\n3 0 1 500000\n")
+expect_failure("legacy polygon past the points", [write_bytes("bad-polygon.vtk", legacy),
+                                                  "-o", path("x.png")], 1, "uses point id 500000")
+grid_text = (b"# vtk DataFile Version 3.0\nbad\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 float\n"
+             b"0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 1 5\n4 0 1 2 400000\nCELL_TYPES 1\n10\n")
+expect_failure("legacy grid cell past the points", [write_bytes("bad-cell.vtk", grid_text),
+                                                    "-o", path("x.png")], 1, "uses point id 400000")
+bad_vtp = vtkPolyData()
+bad_vtp.DeepCopy(polydata_reader.GetOutput())
+bad_vtp.GetCellData().Initialize()
+bad_vtp.GetPolys().InsertNextCell(3, [0, 1, 4000000000])
+vtp_writer = vtkXMLPolyDataWriter()
+vtp_writer.SetInputData(bad_vtp)
+vtp_writer.SetFileName(path("bad-ids.vtp"))
+vtp_writer.Write()
+expect_failure("VTP polygon past the points", [path("bad-ids.vtp"), "-o", path("x.png")], 1,
+               "uses point id 4000000000")
+
+# A box standing on a ground of two triangles: refined automatically for its contact shadows.
+box_obj = ["v -2 -2 0", "v 2 -2 0", "v 2 2 0", "v -2 2 0", "f 1 2 3", "f 1 3 4"]
+corners = [(x, y, z) for z in (0, 1) for y in (-0.5, 0.5) for x in (-0.5, 0.5)]
+box_obj += ["v %g %g %g" % c for c in corners]
+for face in ((1, 3, 4, 2), (5, 6, 8, 7), (1, 2, 6, 5), (3, 7, 8, 4), (1, 5, 7, 3), (2, 4, 8, 6)):
+    box_obj.append("f " + " ".join(str(4 + i) for i in face))
+box_file = write_bytes("box-on-ground.obj", ("\n".join(box_obj) + "\n").encode())
+box_saved = path("box-on-ground.vtp")
+expect_picture("box on a ground", [box_file, *FAST, "--up", "+z", "--save-data", box_saved],
+               needles=("refined to edges of at most",))
+r = vtkXMLPolyDataReader()
+r.SetFileName(box_saved)
+r.Update()
+box_points = vtk_to_numpy(r.GetOutput().GetPoints().GetData())
+box_ao = vtk_to_numpy(r.GetOutput().GetPointData().GetArray("AmbientOcclusion"))
+ground = np.abs(box_points[:, 2]) < 1e-9
+out = np.max(np.abs(box_points[:, :2]), axis=1)
+by_wall = ground & (out > 0.5) & (out < 0.6)
+far_away = ground & (out > 1.5)
+check(by_wall.sum() > 20 and box_ao[by_wall].mean() < box_ao[far_away].mean() - 0.1,
+      f"the ground by the walls is darker ({box_ao[by_wall].mean():.2f}) than away "
+      f"({box_ao[far_away].mean():.2f})")
+result = run(box_file, *FAST, "--up", "+z", "--max-edge", "none", "-o", path("x.png"))
+check(result.returncode == 0 and "refined" not in result.stdout, "--max-edge none: no refinement")
+
+# Auto exposure keeps highlights under a low sun (sunrise.exr): few pixels at full white.
+sunrise = os.path.join(DATA, "env", "sunrise.exr")
+exposed = path("bunny-sunrise.png")
+expect_picture("low sun", [bunny, *FAST, "--env", sunrise], picture=exposed)
+pixels = read_png(exposed)[:, :, :3].astype(float)
+on_object = np.abs(pixels - pixels[0, 0]).sum(axis=2) > 12
+saturated = (pixels.max(axis=2) >= 254)[on_object].mean()
+check(saturated <= 0.05, f"auto exposure under a low sun: {100 * saturated:.1f}% of the "
+      "object saturated (at most 5%)")
+
+# The default view shows a mesh's broad side, whichever axis it stands on: a slab 2 wide, 0.6
+# deep and 2 high on a base, stored z up and y up.
+def slab(up_axis):
+    source = vtkCubeSource()
+    source.SetBounds(-1, 1, -0.3, 0.3, 0, 2)
+    source.Update()
+    pd = vtkPolyData()
+    pd.DeepCopy(source.GetOutput())
+    xyz = vtk_to_numpy(pd.GetPoints().GetData())
+    if up_axis == "y":
+        xyz[:, [1, 2]] = xyz[:, [2, 1]] * [1, -1]
+    pd.GetPoints().Modified()
+    pd.GetPointData().Initialize()
+    vtp = vtkXMLPolyDataWriter()
+    vtp.SetInputData(pd)
+    vtp.SetFileName(path("slab-%s.vtp" % up_axis))
+    vtp.Write()
+    return path("slab-%s.vtp" % up_axis)
+
+
+def silhouette(args):
+    picture = path("view.png")
+    run(*args, "--rays", "16", "--size", "200x150", "-o", picture)
+    pixels = read_png(picture)[:, :, :3].astype(float)
+    return (np.abs(pixels - pixels[0, 0]).sum(axis=2) > 12).mean()
+
+
+for up_axis in ("z", "y"):
+    name = slab(up_axis)
+    default = silhouette([name])
+    top = silhouette([name, "--up", "+" + up_axis, "--elevation", "89"])
+    narrow = silhouette([name, "--up", "+" + up_axis, "--azimuth", "90"])
+    check(default > 1.3 * max(top, narrow),
+          f"a slab stored {up_axis} up is seen from its broad side by default "
+          f"({default:.3f} of the picture, top {top:.3f}, narrow side {narrow:.3f})")
+
 # Bad input: one line, non-zero exit.
 expect_failure("missing file", [path("no-such.obj"), "-o", path("x.png")], 1, "does not exist")
 expect_failure("directory", [WORK, "-o", path("x.png")], 1, "is a directory")
@@ -344,6 +512,8 @@ for args, words in (
         (["--env-azimuth", "90"], "give one with --env"),
         (["--env", path("sky.exr"), "--env-azimuth", "east"], "number of degrees"),
         (["--env", path("sky.exr"), "--env-exposure", "bright"], "'auto' or a number"),
+        (["--crease", "200"], "0 to 180"),
+        (["--max-edge", "-1"], "auto, none or a positive length"),
         (["--sun"], "needs a value")):
     if args[-1] != "--sun" and "-o" not in args:
         args = [*args, "-o", path("x.png")]
@@ -353,7 +523,8 @@ expect_failure("neither -o nor --interactive", [bunny], 2, "--interactive")
 
 help_text = run("--help")
 options = ["-o", "--size", "--interactive", "--save-data", "--show", "--sun", "--sphere-light",
-           "--sky", "--env", "--env-azimuth", "--env-exposure", "--mode", "--rays", "--cache", "--azimuth", "--elevation", "--zoom", "--up",
+           "--sky", "--env", "--env-azimuth", "--env-exposure", "--mode", "--rays", "--crease",
+           "--max-edge", "--cache", "--azimuth", "--elevation", "--zoom", "--up",
            "--background", "--spacing", "--height-scale", "--max-grid", "--help", "--version",
            "Examples:"]
 check(help_text.returncode == 0 and all(o in help_text.stdout for o in options),
