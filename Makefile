@@ -13,7 +13,8 @@ CMAKE_ARGS ?=
 XVFB = xvfb-run -a -s "-screen 0 1920x1080x24"
 RENDER = $(XVFB) $(BUILD_DIR)/bin/aperture-render
 
-.PHONY: all deps configure build demo test pictures evaluation report fuzz install format clean
+.PHONY: all deps configure build demo test pictures evaluation report fuzz sanitize install format \
+  clean
 
 all: build
 
@@ -39,7 +40,7 @@ test: build
 	  ctest --output-on-failure --parallel $(JOBS)
 
 # The pictures in README.md and docs/: every shading mode on the Fuji terrain and on the bunny, the
-# aperture radius as colours, HDR environments and dynamic scenes.
+# aperture radius as colours, HDR environments, dynamic scenes and real meshes.
 pictures: build
 	@mkdir -p docs/images $(BUILD_DIR)/demo
 	@$(RENDER) -o docs/images/fuji.png --size 1280x800 \
@@ -59,6 +60,8 @@ pictures: build
 	  docs/images/dynamic-deform.png > /dev/null
 	@$(XVFB) $(BUILD_DIR)/bin/DynamicScenes orbit Testing/Data/stanford-bunny.obj \
 	  Testing/Data/env/forest.exr docs/images/dynamic-orbit.png > /dev/null
+	@. $(BUILD_DIR)/env.sh && $(XVFB) $(PYTHON) Utilities/Pictures/real_meshes.py \
+	  $(BUILD_DIR)/bin/aperture-render Testing/Data $(BUILD_DIR)/demo/real docs/images
 
 # The accuracy evaluation (docs/evaluation-tables.md, docs/images/evaluation-montage.png) and the
 # performance report (docs/performance.md and its plots); REPORT_MAX_LEVEL limits Table 1.
@@ -70,25 +73,63 @@ report: build
 	@. $(BUILD_DIR)/env.sh && $(XVFB) $(PYTHON) Utilities/Evaluation/performance.py \
 	  --bin $(BUILD_DIR)/bin --out docs --max-level $(REPORT_MAX_LEVEL)
 
-# libFuzzer on the EXR reading path, with AddressSanitizer and UndefinedBehaviorSanitizer, in a
-# Clang build of its own, for FUZZ_SECONDS (60) from random seed FUZZ_SEED (0: a new one each
-# run); the corpus and any crash-* files stay in $(FUZZ_DIR)/corpus and $(FUZZ_DIR).
+# libFuzzer on the EXR and the mesh reading paths, with AddressSanitizer and
+# UndefinedBehaviorSanitizer, in a Clang build of its own, for FUZZ_SECONDS (60) each from random
+# seed FUZZ_SEED (0: a new one each run); the corpora and any crash-* files stay in
+# $(FUZZ_DIR)/corpus-<target> and $(FUZZ_DIR).
 FUZZ_DIR ?= build-fuzz
 FUZZ_SECONDS ?= 60
 FUZZ_SEED ?= 0
+FUZZERS = FuzzOpenEXRReader FuzzMeshReaders
 SANITIZE = -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
 fuzz:
 	@Utilities/install-dependencies.sh fuzz
-	@mkdir -p $(FUZZ_DIR)/corpus
+	@mkdir -p $(FUZZ_DIR)
 	@CC=clang CXX=clang++ cmake -S . -B $(FUZZ_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	  -DAPERTURELIGHTING_LIBFUZZER=ON -DPython3_EXECUTABLE=$(PYTHON) \
 	  -DCMAKE_C_FLAGS="$(SANITIZE)" -DCMAKE_CXX_FLAGS="$(SANITIZE) -fsanitize=fuzzer-no-link" \
 	  -DCMAKE_EXE_LINKER_FLAGS="$(SANITIZE)" -DCMAKE_SHARED_LINKER_FLAGS="$(SANITIZE)" \
 	  > $(FUZZ_DIR)/configure.log 2>&1 || { cat $(FUZZ_DIR)/configure.log; exit 1; }
-	@cmake --build $(FUZZ_DIR) --parallel $(JOBS) --target FuzzOpenEXRReader FuzzOpenEXRReaderReplay
-	@$(FUZZ_DIR)/bin/FuzzOpenEXRReaderReplay --write-seeds $(FUZZ_DIR)/corpus
-	@cd $(FUZZ_DIR) && ./bin/FuzzOpenEXRReader -max_total_time=$(FUZZ_SECONDS) \
-	  -seed=$(FUZZ_SEED) -timeout=10 -rss_limit_mb=2048 -max_len=16384 -print_final_stats=1 corpus
+	@cmake --build $(FUZZ_DIR) --parallel $(JOBS) --target $(FUZZERS) $(FUZZERS:%=%Replay)
+	@for f in $(FUZZERS); do \
+	  mkdir -p $(FUZZ_DIR)/corpus-$$f && $(FUZZ_DIR)/bin/$${f}Replay --write-seeds $(FUZZ_DIR)/corpus-$$f && \
+	  (cd $(FUZZ_DIR) && ./bin/$$f -max_total_time=$(FUZZ_SECONDS) -seed=$(FUZZ_SEED) -timeout=10 \
+	    -rss_limit_mb=2048 -max_len=16384 -print_final_stats=1 corpus-$$f) || exit 1; \
+	done
+
+# The whole ctest suite built with AddressSanitizer and UndefinedBehaviorSanitizer (Clang, one
+# shared runtime), in $(SANITIZE_DIR). The Python tests run an interpreter that preloads the
+# runtime (Testing/Sanitizers/python3-asan.in; without leak checks in the interpreter itself).
+# Every process keeps its libraries loaded (Testing/Sanitizers/keep-loaded.c), and leaks reported
+# in the system's OpenGL and X libraries, and one of VTK 9.1's, are suppressed
+# (Testing/Sanitizers/lsan.supp); any other report fails.
+SANITIZE_DIR ?= build-sanitize
+SANITIZE_RUNTIME = $(shell clang -print-file-name=libclang_rt.asan-x86_64.so 2>/dev/null)
+SANITIZE_PYTHON = $(abspath $(SANITIZE_DIR))/python3-asan
+SANITIZE_KEEP = $(abspath $(SANITIZE_DIR))/libkeep-loaded.so
+sanitize:
+	@Utilities/install-dependencies.sh fuzz
+	@mkdir -p $(SANITIZE_DIR)
+	@clang -shared -fPIC -o $(SANITIZE_KEEP) Testing/Sanitizers/keep-loaded.c
+	@sed -e 's|@KEEP@|$(SANITIZE_KEEP)|g; s|@RUNTIME@|$(SANITIZE_RUNTIME)|; s|@PYTHON@|$(PYTHON)|' \
+	  -e 's|@SITE@|$(abspath Testing/Sanitizers)|' Testing/Sanitizers/python3-asan.in \
+	  > $(SANITIZE_PYTHON) && chmod +x $(SANITIZE_PYTHON)
+	@CC=clang CXX=clang++ cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DPython3_EXECUTABLE=$(SANITIZE_PYTHON) \
+	  -DCMAKE_C_FLAGS="$(SANITIZE) -shared-libasan -fno-sanitize=vptr" \
+	  -DCMAKE_CXX_FLAGS="$(SANITIZE) -shared-libasan -fno-sanitize=vptr" \
+	  -DCMAKE_EXE_LINKER_FLAGS="$(SANITIZE) -shared-libasan -Wl,-rpath,$(dir $(SANITIZE_RUNTIME))" \
+	  -DCMAKE_SHARED_LINKER_FLAGS="$(SANITIZE) -shared-libasan -Wl,-rpath,$(dir $(SANITIZE_RUNTIME))" \
+	  -DCMAKE_MODULE_LINKER_FLAGS="$(SANITIZE) -shared-libasan -Wl,-rpath,$(dir $(SANITIZE_RUNTIME))" \
+	  > $(SANITIZE_DIR)/configure.log 2>&1 || { cat $(SANITIZE_DIR)/configure.log; exit 1; }
+	@cmake --build $(SANITIZE_DIR) --parallel $(JOBS)
+	@cd $(SANITIZE_DIR) && $(SANITIZER_ENV) xvfb-run -a -s "-screen 0 1920x1080x24" \
+	  ctest --output-on-failure --parallel $(JOBS) --timeout 1500 $(SANITIZE_CTEST_ARGS)
+ASAN_SETTINGS = detect_leaks=1:abort_on_error=1:detect_odr_violation=0:allocator_may_return_null=1:$\
+  verify_asan_link_order=0
+SANITIZER_ENV = LD_PRELOAD=$(SANITIZE_KEEP) ASAN_OPTIONS=$(ASAN_SETTINGS) \
+  LSAN_OPTIONS=suppressions=$(abspath Testing/Sanitizers/lsan.supp):print_suppressions=0 \
+  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 
 install: build
 	@cmake --install $(BUILD_DIR)
@@ -98,4 +139,4 @@ format:
 	  | xargs clang-format -i --style=file
 
 clean:
-	@rm -rf $(BUILD_DIR) $(FUZZ_DIR)
+	@rm -rf $(BUILD_DIR) $(FUZZ_DIR) $(SANITIZE_DIR)

@@ -160,9 +160,10 @@ vtkApertureRayRisks::vtkApertureRayRisks(const std::vector<const vtkApertureSurf
 //------------------------------------------------------------------------------
 std::int64_t vtkApertureRayRisks::Index(float x, int axis) const
 {
-  // Clamped to the 21 bits a key has per axis (cells beyond are shared, which is harmless).
+  // Clamped to the 21 bits a key has per axis (cells beyond are shared, which is harmless); NaN,
+  // from coordinates near FLT_MAX whose differences overflow, goes to cell 0.
   const double c = std::floor((double(x) - this->Lower[axis]) / this->Size);
-  return static_cast<std::int64_t>(std::min(std::max(c, 0.0), 2097151.0));
+  return c >= 0.0 ? static_cast<std::int64_t>(std::min(c, 2097151.0)) : 0;
 }
 
 //------------------------------------------------------------------------------

@@ -147,15 +147,16 @@ struct vtkApertureSurface::Build
   std::vector<std::uint32_t> VertexOf;  // per input point (NoVertex when not finite)
   std::vector<vtkIdType> VertexInput;   // an input point of each vertex
   std::vector<unsigned char> OnSurface; // input point used by a polygon or strip
-  std::vector<vtkIdType> TriInput;      // every triangle's input points, 3 each
-  std::vector<vtkIdType> TriCell;       // its polygon or strip
-  std::vector<vtkIdType> TriCorner;     // the connectivity index of each corner
+  // 32-bit where the size limits of SetPolyData() allow: the triangles dominate the memory.
+  std::vector<std::uint32_t> TriInput;  // every triangle's input points, 3 each
+  std::vector<std::uint32_t> TriCell;   // its polygon or strip
+  std::vector<std::uint32_t> TriCorner; // the connectivity index of each corner
   std::vector<vtkIdType> TriPoint;      // the receiving point of each corner (-1: none)
-  std::vector<vtkIdType> Geometry;      // triangles with three distinct vertices
-  std::vector<double> FaceNormals;      // unit (or zero) normal of each geometry triangle
-  std::vector<double> FaceAreas;
+  std::vector<std::uint32_t> Geometry;  // triangles with three distinct vertices
+  std::vector<float> FaceNormals;       // unit (or zero) normal of each geometry triangle
+  std::vector<float> FaceAreas;
   std::vector<vtkIdType> IncidentStart;    // per vertex, into Incident
-  std::vector<vtkIdType> Incident;         // 3 * geometry triangle + corner
+  std::vector<std::uint32_t> Incident;     // 3 * geometry triangle + corner
   std::vector<vtkIdType> VertexFirstPoint; // each vertex's first receiving point (-1: none)
   vtkIdType Corners = 0;                   // polygon corners, then strip corners
   vtkIdType Polygons = 0;                  // cells before the first strip
@@ -401,7 +402,8 @@ void vtkApertureSurface::Build::Orient()
         const vtkIdType x = this->Neighbour(this->Incident[c], step);
         if (x > v)
         {
-          edges.emplace_back(x, step == 1 ? this->Incident[c] : -1 - this->Incident[c]);
+          const vtkIdType corner = this->Incident[c];
+          edges.emplace_back(x, step == 1 ? corner : -1 - corner);
         }
       }
     }
@@ -455,6 +457,7 @@ void vtkApertureSurface::Build::Orient()
       }
     }
   }
+  this->FindIncident(); // the corners of flipped triangles moved
 }
 
 //------------------------------------------------------------------------------
@@ -472,13 +475,14 @@ void vtkApertureSurface::Build::ComputeFaceNormals()
     }
     const double e1[3] = { p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2] };
     const double e2[3] = { p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2] };
-    double* n = &this->FaceNormals[3 * g];
+    double n[3];
     vtkMath::Cross(e1, e2, n);
     const double length = vtkMath::Normalize(n);
-    this->FaceAreas[g] = length > 0.0 ? 0.5 * length : 0.0;
-    if (!(length > 0.0))
+    const bool area = length > 0.0; // zero area: no direction
+    this->FaceAreas[g] = area ? static_cast<float>(0.5 * length) : 0.0f;
+    for (int k = 0; k < 3; ++k)
     {
-      std::fill(n, n + 3, 0.0); // zero area: no direction
+      this->FaceNormals[3 * g + k] = area ? static_cast<float>(n[k]) : 0.0f;
     }
   }
 }
@@ -545,7 +549,7 @@ void vtkApertureSurface::Build::SidesFromCreases(double cosAngle)
   std::vector<vtkIdType> pointOfSide;
   for (vtkIdType v = 0; v + 1 < static_cast<vtkIdType>(this->IncidentStart.size()); ++v)
   {
-    const vtkIdType* corners = &this->Incident[this->IncidentStart[v]];
+    const std::uint32_t* corners = this->Incident.data() + this->IncidentStart[v];
     const int m = static_cast<int>(this->IncidentStart[v + 1] - this->IncidentStart[v]);
     if (m == 0)
     {
@@ -581,9 +585,9 @@ void vtkApertureSurface::Build::SidesFromCreases(double cosAngle)
     {
       for (size_t b = a + 1; b < keyed.size() && keyed[b].first == keyed[a].first; ++b)
       {
-        const double* na = &this->FaceNormals[corners[keyed[a].second] / 3 * 3];
-        const double* nb = &this->FaceNormals[corners[keyed[b].second] / 3 * 3];
-        if (vtkMath::Dot(na, na) > 0.0 && vtkMath::Dot(na, nb) >= cosAngle)
+        const float* na = &this->FaceNormals[corners[keyed[a].second] / 3 * 3];
+        const float* nb = &this->FaceNormals[corners[keyed[b].second] / 3 * 3];
+        if (vtkMath::Dot(na, na) > 0.0f && vtkMath::Dot(na, nb) >= cosAngle)
         {
           classes.Unite(keyed[a].second, keyed[b].second);
         }
@@ -605,7 +609,7 @@ void vtkApertureSurface::Build::SidesFromCreases(double cosAngle)
         areas.push_back(0.0);
       }
       rootOf[i] = sideOfRoot[root];
-      const double* n = &this->FaceNormals[corners[i] / 3 * 3];
+      const float* n = &this->FaceNormals[corners[i] / 3 * 3];
       const double area = this->FaceAreas[corners[i] / 3];
       for (int k = 0; k < 3; ++k)
       {
@@ -827,7 +831,7 @@ void vtkApertureSurface::Build::MapInputPoints()
     // Each strip triangle with three distinct points, with its strip and its corners' points.
     for (size_t t = 0; t < this->TriCell.size(); ++t)
     {
-      const vtkIdType* in = &this->TriInput[3 * t];
+      const std::uint32_t* in = &this->TriInput[3 * t];
       if (this->TriCell[t] < this->Polygons || in[0] == in[1] || in[1] == in[2] || in[0] == in[2])
       {
         continue;
@@ -942,9 +946,11 @@ bool vtkApertureSurface::SetPolyData(
   vtkPolyData* input, const double origin[3], double featureAngle, std::string& error)
 {
   const vtkIdType n = input->GetNumberOfPoints();
-  if (n >= static_cast<vtkIdType>(NoVertex))
+  const vtkIdType corners = input->GetPolys()->GetNumberOfConnectivityIds() +
+    input->GetStrips()->GetNumberOfConnectivityIds();
+  if (n >= static_cast<vtkIdType>(NoVertex) || corners >= static_cast<vtkIdType>(NoVertex) / 3)
   {
-    error = "more than 2^32 points";
+    error = "more than 2^32 points, or more than 2^32 / 3 polygon and strip corners";
     return false;
   }
   error = vtkApertureCellCheck::FindBadCell(input);

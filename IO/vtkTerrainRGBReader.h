@@ -79,11 +79,13 @@ public:
   ///@}
 
   /**
-   * Decodes one Terrain-RGB pixel to metres.
+   * Decodes one Terrain-RGB pixel to metres: -10000 + (R 65536 + G 256 + B) 0.1, computed in
+   * decimetres first so that every height is the nearest double to its decimal value (sea level
+   * exactly 0, whatever the compiler contracts).
    */
   static double DecodeHeight(unsigned char r, unsigned char g, unsigned char b)
   {
-    return -10000.0 + (r * 65536.0 + g * 256.0 + b) * 0.1;
+    return (r * 65536 + g * 256 + b - 100000) / 10.0;
   }
 
 protected:

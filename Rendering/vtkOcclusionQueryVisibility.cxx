@@ -18,6 +18,7 @@
 #include "vtkVisibilityRenderer.h"
 
 #include "vtkBitArray.h"
+#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -26,6 +27,7 @@
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
@@ -46,7 +48,6 @@
 #include <limits>
 
 vtkStandardNewMacro(vtkOcclusionQueryVisibility);
-vtkCxxSetObjectMacro(vtkOcclusionQueryVisibility, RenderWindow, vtkRenderWindow);
 
 namespace
 {
@@ -125,6 +126,11 @@ public:
   std::vector<unsigned char> Seen;
   bool Filtering = false;
   vtkRayCastVisibility RayCast;
+  // Weak: the window usually renders this filter's output, and a reference back would make a
+  // cycle that nothing frees. When it goes, the GL objects made in its context go first.
+  vtkWeakPointer<vtkRenderWindow> RenderWindow;
+  vtkNew<vtkCallbackCommand> WindowGone;
+  unsigned long WindowGoneTag = 0;
   vtkWeakPointer<vtkRenderer> ViewRenderer;
   vtkWeakPointer<vtkProp3D> ViewProp;
   std::unique_ptr<vtkVisibilityRenderer> Renderer;
@@ -135,13 +141,20 @@ vtkOcclusionQueryVisibility::vtkOcclusionQueryVisibility()
   : Internals(new vtkInternals)
 {
   this->SetNumberOfInputPorts(2);
+  this->Internals->WindowGone->SetClientData(this);
+  this->Internals->WindowGone->SetCallback(
+    [](vtkObject* window, unsigned long, void* self, void*)
+    {
+      static_cast<vtkOcclusionQueryVisibility*>(self)->ReleaseGraphicsResources(
+        static_cast<vtkWindow*>(window));
+    });
 }
 
 //------------------------------------------------------------------------------
 vtkOcclusionQueryVisibility::~vtkOcclusionQueryVisibility()
 {
-  this->ReleaseGraphicsResources(this->RenderWindow ? this->RenderWindow : this->OwnWindow);
   this->SetRenderWindow(nullptr);
+  this->ReleaseGraphicsResources(this->OwnWindow);
   if (this->OwnWindow)
   {
     this->OwnWindow->Finalize();
@@ -161,6 +174,30 @@ const char* vtkOcclusionQueryVisibility::GetBackendAsString()
     default:
       return "DepthCompare";
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkOcclusionQueryVisibility::SetRenderWindow(vtkRenderWindow* window)
+{
+  vtkInternals& in = *this->Internals;
+  if (in.RenderWindow == window)
+  {
+    return;
+  }
+  if (in.RenderWindow)
+  {
+    this->ReleaseGraphicsResources(in.RenderWindow);
+    in.RenderWindow->RemoveObserver(in.WindowGoneTag);
+  }
+  in.RenderWindow = window;
+  in.WindowGoneTag = window ? window->AddObserver(vtkCommand::DeleteEvent, in.WindowGone) : 0;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+vtkRenderWindow* vtkOcclusionQueryVisibility::GetRenderWindow()
+{
+  return this->Internals->RenderWindow;
 }
 
 //------------------------------------------------------------------------------
@@ -239,7 +276,7 @@ bool vtkOcclusionQueryVisibility::PrepareOpenGL(bool needStorage, std::string& e
 {
   vtkInternals& in = *this->Internals;
   // The OpenGL context: the caller's window, or an off-screen one of our own.
-  vtkRenderWindow* window = this->RenderWindow;
+  vtkRenderWindow* window = this->GetRenderWindow();
   if (!window)
   {
     if (!this->OwnWindow)
@@ -848,7 +885,7 @@ void vtkOcclusionQueryVisibility::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FilteringThreshold: " << this->FilteringThreshold << "\n";
   os << indent << "ViewRenderer: " << this->Internals->ViewRenderer.GetPointer() << "\n";
   os << indent << "ViewProp: " << this->Internals->ViewProp.GetPointer() << "\n";
-  os << indent << "RenderWindow: " << this->RenderWindow << "\n";
+  os << indent << "RenderWindow: " << this->GetRenderWindow() << "\n";
   os << indent << "NumberOfDepthPasses: " << this->NumberOfDepthPasses << "\n";
   os << indent << "NumberOfComputedPoints: " << this->NumberOfComputedPoints << "\n";
   os << indent << "NumberOfUnseenTriangles: " << this->Internals->Unseen.size() << "\n";

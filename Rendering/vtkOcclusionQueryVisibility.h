@@ -179,10 +179,11 @@ public:
   ///@{
   /**
    * A render window whose OpenGL context the OpenGL backends share. Without one they open
-   * their own off-screen window.
+   * their own off-screen window. The filter does not keep the window alive (it usually renders
+   * the filter's output); once the window is gone, the filter opens its own.
    */
   void SetRenderWindow(vtkRenderWindow* window);
-  vtkGetObjectMacro(RenderWindow, vtkRenderWindow);
+  vtkRenderWindow* GetRenderWindow();
   ///@}
 
   ///@{
@@ -270,7 +271,6 @@ protected:
   bool ComputeVisibilityBits = false;
   bool VertexFiltering = false;
   double FilteringThreshold = 0.05;
-  vtkRenderWindow* RenderWindow = nullptr;
   int NumberOfDepthPasses = 0;
   vtkIdType NumberOfComputedPoints = 0;
   vtkIdType UploadedBytes = 0;

@@ -11,33 +11,25 @@
 #include "ApertureRenderInput.h"
 
 #include "ApertureRenderFuji.h"
+#include "ApertureRenderMesh.h"
 #include "ApertureRenderMessages.h"
 #include "ApertureRenderOptions.h"
-#include "ApertureRenderPLY.h"
 
-#include "vtkApertureCellCheck.h"
 #include "vtkApertureRefinement.h"
 #include "vtkApertureSurface.h"
 #include "vtkCellArray.h"
 #include "vtkDEMReader.h"
-#include "vtkDataSetReader.h"
-#include "vtkDataSetSurfaceFilter.h"
 #include "vtkFloatArray.h"
 #include "vtkImageReader2.h"
 #include "vtkImageResize.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
-#include "vtkOBJReader.h"
 #include "vtkOpenEXRReader.h"
-#include "vtkPLYReader.h"
 #include "vtkPNGReader.h"
 #include "vtkPNGValidator.h"
 #include "vtkPointData.h"
-#include "vtkSTLReader.h"
 #include "vtkTIFFReader.h"
 #include "vtkTerrainRGBReader.h"
-#include "vtkUnstructuredGrid.h"
-#include "vtkXMLPolyDataReader.h"
 #include "vtksys/SystemTools.hxx"
 
 #include <algorithm>
@@ -54,183 +46,6 @@ namespace
 {
 // Metres per arc-second of latitude.
 constexpr double MetresPerArcSecond = 30.87;
-
-std::string Quoted(const std::string& text)
-{
-  return "'" + text + "'";
-}
-
-// The first VTK error of a read, or `fallback`.
-std::string ReadError(MessageCapture& messages, const std::string& fallback)
-{
-  const std::string error = messages.FirstError();
-  return error.empty() ? fallback : error;
-}
-
-// The first cell whose point ids lie outside the points (a damaged file), or empty.
-std::string BadCell(vtkDataObject* data)
-{
-  if (auto* grid = vtkUnstructuredGrid::SafeDownCast(data))
-  {
-    return vtkApertureCellCheck::FindBadCell(grid);
-  }
-  auto* poly = vtkPolyData::SafeDownCast(data);
-  return poly ? vtkApertureCellCheck::FindBadCell(poly) : std::string();
-}
-
-void NoteNonFinitePoints(Input& input);
-
-bool LoadMesh(const std::string& name, const std::string& extension, MessageCapture& messages,
-  Input& input, std::string& error)
-{
-  vtkSmartPointer<vtkAlgorithm> reader;
-  vtkNew<vtkCellArray> strips;
-  if (extension == ".obj")
-  {
-    auto obj = vtkSmartPointer<vtkOBJReader>::New();
-    obj->SetFileName(name.c_str());
-    reader = obj;
-  }
-  else if (extension == ".ply")
-  {
-    if (!CheckPLY(name, strips, error))
-    {
-      return false;
-    }
-    auto ply = vtkSmartPointer<vtkPLYReader>::New();
-    ply->SetFileName(name.c_str());
-    reader = ply;
-  }
-  else if (extension == ".stl")
-  {
-    // vtkSTLReader reads what a truncated binary file holds without a word; its header says how
-    // many triangles there should be (50 bytes each after 84 bytes of header).
-    if (vtksys::SystemTools::DetectFileType(name.c_str()) != vtksys::SystemTools::FileTypeText)
-    {
-      const unsigned long size = vtksys::SystemTools::FileLength(name);
-      unsigned char count[4] = { 0, 0, 0, 0 };
-      FILE* file = vtksys::SystemTools::Fopen(name, "rb");
-      const bool header =
-        file && std::fseek(file, 80, SEEK_SET) == 0 && std::fread(count, 1, 4, file) == 4;
-      if (file)
-      {
-        std::fclose(file);
-      }
-      const uint64_t triangles = count[0] | (uint64_t(count[1]) << 8) | (uint64_t(count[2]) << 16) |
-        (uint64_t(count[3]) << 24);
-      if (!header || size < 84 + 50 * triangles)
-      {
-        std::ostringstream what;
-        what << Quoted(name) << " is truncated (its header announces " << triangles
-             << " triangles, " << (size > 84 ? (size - 84) / 50 : 0) << " are there)";
-        error = what.str();
-        return false;
-      }
-    }
-    auto stl = vtkSmartPointer<vtkSTLReader>::New();
-    stl->SetFileName(name.c_str());
-    reader = stl;
-  }
-  else if (extension == ".vtp")
-  {
-    auto vtp = vtkSmartPointer<vtkXMLPolyDataReader>::New();
-    if (!vtp->CanReadFile(name.c_str()))
-    {
-      error = Quoted(name) + " is not a VTK XML polydata file";
-      return false;
-    }
-    vtp->SetFileName(name.c_str());
-    reader = vtp;
-  }
-  else
-  {
-    // Legacy files may hold any dataset: its outer surface is shaded.
-    auto legacy = vtkSmartPointer<vtkDataSetReader>::New();
-    legacy->SetFileName(name.c_str());
-    legacy->ReadAllScalarsOn();
-    legacy->ReadAllVectorsOn();
-    legacy->ReadAllNormalsOn();
-    legacy->ReadAllTCoordsOn();
-    legacy->ReadAllFieldsOn();
-    legacy->ReadAllColorScalarsOn();
-    if (!legacy->OpenVTKFile() || !legacy->ReadHeader())
-    {
-      legacy->CloseVTKFile();
-      error = Quoted(name) + " is not a VTK legacy file";
-      return false;
-    }
-    legacy->CloseVTKFile();
-    // vtkDataSetSurfaceFilter reads through the cells' point ids: check them first.
-    messages.Clear();
-    legacy->Update();
-    const std::string bad = BadCell(legacy->GetOutputDataObject(0));
-    if (!bad.empty())
-    {
-      error = Quoted(name) + " is damaged: " + bad;
-      return false;
-    }
-    auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
-    surface->SetInputConnection(legacy->GetOutputPort());
-    reader = surface;
-  }
-  messages.Clear();
-  reader->Update();
-  auto* read = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
-  if (!messages.FirstError().empty() || !read)
-  {
-    error = "cannot read " + Quoted(name) + ": " + ReadError(messages, "unknown error");
-    return false;
-  }
-  const std::string bad = BadCell(read);
-  if (!bad.empty())
-  {
-    error = Quoted(name) + " is damaged: " + bad;
-    return false;
-  }
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->ShallowCopy(read);
-  if (strips->GetNumberOfCells() > 0)
-  {
-    mesh->SetStrips(strips); // vtkPLYReader reads no strips
-  }
-  if (mesh->GetNumberOfPolys() + mesh->GetNumberOfStrips() == 0)
-  {
-    std::ostringstream what;
-    what << Quoted(name) << " has no polygons to shade (" << mesh->GetNumberOfPoints()
-         << " points, " << mesh->GetNumberOfLines() << " lines)";
-    error = what.str();
-    return false;
-  }
-  input.Mesh = mesh;
-  std::ostringstream description;
-  description << vtksys::SystemTools::GetFilenameName(name) << ": " << mesh->GetNumberOfPoints()
-              << " points, " << mesh->GetNumberOfPolys() << " polygons";
-  if (mesh->GetNumberOfStrips() > 0)
-  {
-    description << ", " << mesh->GetNumberOfStrips() << " triangle strips";
-  }
-  input.Description = description.str();
-  NoteNonFinitePoints(input);
-  return true;
-}
-
-// Points that are not finite: said once; the filter closes them and the view leaves out the
-// cells that use them.
-void NoteNonFinitePoints(Input& input)
-{
-  vtkPoints* points = input.Mesh->GetPoints();
-  for (vtkIdType i = 0; points && i < points->GetNumberOfPoints(); ++i)
-  {
-    const double* p = points->GetPoint(i);
-    input.NonFinitePoints +=
-      (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])) ? 0 : 1;
-  }
-  if (input.NonFinitePoints > 0)
-  {
-    input.Notes.push_back(std::to_string(input.NonFinitePoints) +
-      " point(s) are not finite (NaN or infinite): the cells that use them are left out");
-  }
-}
 
 // The edge length a mesh is refined to: --max-edge, or automatically 1/64 of the scene's
 // diagonal when its longest edge is more than 1/16 of it, coarser if that would make more than
@@ -434,7 +249,7 @@ bool LoadHeightField(const std::string& name, const std::string& extension, cons
     vtkDataArray* scalars = tiff->GetOutput()->GetPointData()->GetScalars();
     if (!messages.FirstError().empty() || !scalars)
     {
-      error = "cannot read " + Quoted(name) + ": " + ReadError(messages, "no image data");
+      error = "cannot read " + Quoted(name) + ": " + messages.FirstErrorOr("no image data");
       return false;
     }
     if (scalars->GetNumberOfComponents() != 1)
@@ -514,7 +329,7 @@ bool LoadHeightField(const std::string& name, const std::string& extension, cons
   }
   if (!messages.FirstError().empty() || !image || image->GetNumberOfPoints() == 0)
   {
-    error = "cannot read " + Quoted(name) + ": " + ReadError(messages, "no heights in it");
+    error = "cannot read " + Quoted(name) + ": " + messages.FirstErrorOr("no heights in it");
     return false;
   }
   input.Heights = image;

@@ -77,6 +77,17 @@ std::string MessageCapture::FirstError() const
   return this->ErrorTexts.empty() ? std::string() : this->ErrorTexts.front();
 }
 
+std::string MessageCapture::FirstErrorOr(const std::string& fallback) const
+{
+  const std::string error = this->FirstError();
+  return error.empty() ? fallback : error;
+}
+
+std::string Quoted(const std::string& name)
+{
+  return "'" + name + "'";
+}
+
 std::string MessageCapture::LastError() const
 {
   return this->ErrorTexts.empty() ? std::string() : this->ErrorTexts.back();

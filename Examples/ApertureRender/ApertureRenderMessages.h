@@ -38,6 +38,8 @@ public:
   // The first error since the last Clear(), as one sentence without VTK's file, line and object
   // address; empty when there is none.
   std::string FirstError() const;
+  // FirstError(), or `fallback` when there is none.
+  std::string FirstErrorOr(const std::string& fallback) const;
   std::string LastError() const;
   const std::vector<std::string>& Warnings() const { return this->WarningTexts; }
   void Clear();
@@ -49,6 +51,9 @@ private:
   int SavedDisplayMode = 0;
   std::vector<std::string> ErrorTexts, WarningTexts;
 };
+
+// A file name as the messages quote it.
+std::string Quoted(const std::string& name);
 
 // A progress bar on stderr for an algorithm's ProgressEvents, drawn only on a terminal.
 class ProgressBar

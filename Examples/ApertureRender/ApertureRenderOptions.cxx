@@ -10,6 +10,8 @@
 =========================================================================*/
 #include "ApertureRenderOptions.h"
 
+#include "ApertureRenderMessages.h"
+
 #include "vtksys/CommandLineArguments.hxx"
 #include "vtksys/SystemTools.hxx"
 
@@ -57,11 +59,6 @@ bool ToNumbers(const std::string& text, size_t least, size_t most, std::vector<d
     return false;
   }
   return values.size() >= least && values.size() <= most;
-}
-
-std::string Quoted(const std::string& text)
-{
-  return "'" + text + "'";
 }
 }
 

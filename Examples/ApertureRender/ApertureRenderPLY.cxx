@@ -43,13 +43,74 @@ struct Element
   std::vector<Property> Properties;
 };
 
-// The point ids of a face or strip: the vertex_indices (or vertex_index) list of a face or
-// tristrips element. Reads it with `visit(element, values)`.
+// The point ids of a face or strip: the vertex_indices list of a face or tristrips element (a
+// vertex_index list is renamed so as it is read). Read with `visit(element, values)`.
 bool IsIndexList(const Element& element, const Property& property)
 {
   return property.CountSize > 0 && !property.Real &&
-    (element.Name == "face" || element.Name == "tristrips") &&
-    (property.Name == "vertex_indices" || property.Name == "vertex_index");
+    (element.Name == "face" || element.Name == "tristrips") && property.Name == "vertex_indices";
+}
+
+// Whether vtkPLYReader reads an element's property as a list (it frees what it takes for one);
+// -1 for properties it does not read.
+int ReadsAsList(const std::string& element, const std::string& property)
+{
+  static const std::map<std::string, int> known = { { "face vertex_indices", 1 },
+    { "face texcoord", 1 }, { "face intensity", 0 }, { "face red", 0 }, { "face green", 0 },
+    { "face blue", 0 }, { "face alpha", 0 }, { "vertex x", 0 }, { "vertex y", 0 },
+    { "vertex z", 0 }, { "vertex u", 0 }, { "vertex v", 0 }, { "vertex texture_u", 0 },
+    { "vertex texture_v", 0 }, { "vertex nx", 0 }, { "vertex ny", 0 }, { "vertex nz", 0 },
+    { "vertex red", 0 }, { "vertex green", 0 }, { "vertex blue", 0 }, { "vertex alpha", 0 },
+    { "vertex diffuse_red", 0 }, { "vertex diffuse_green", 0 }, { "vertex diffuse_blue", 0 } };
+  const auto found = known.find(element + " " + property);
+  return found == known.end() ? -1 : found->second;
+}
+
+// vtkPLYReader reads, without checking, one vertex element with x, y and z, then at most one face
+// element with vertex_indices, each known property a list or a scalar as it expects (see
+// ReadsAsList). Says what breaks that, or empty.
+std::string CheckLayout(const std::vector<Element>& elements)
+{
+  std::map<std::string, int> seen;
+  for (const Element& element : elements)
+  {
+    const std::string& name = element.Name;
+    if (++seen[name] > 1 && (name == "vertex" || name == "face"))
+    {
+      return "has more than one " + name + " element";
+    }
+    if (name == "face" && !seen.count("vertex"))
+    {
+      return "has its faces before its vertices";
+    }
+    // The reader skips nothing: it would read an element it ignores as the vertices or faces.
+    const bool read = name == "vertex" || name == "face";
+    if (read && seen.size() > (seen.count("vertex") + seen.count("face")))
+    {
+      return "has a " + name + " element after one it does not read";
+    }
+    std::map<std::string, bool> isList; // vtkPLY finds the first property of a name
+    for (const Property& p : element.Properties)
+    {
+      isList.emplace(p.Name, p.CountSize > 0);
+    }
+    for (const auto& property : isList)
+    {
+      const int expected = ReadsAsList(name, property.first);
+      if (expected >= 0 && expected != static_cast<int>(property.second))
+      {
+        return "has a " + name + " property " + property.first + " that is " +
+          (property.second ? "a list" : "not a list");
+      }
+    }
+    if ((name == "vertex" && !(isList.count("x") && isList.count("y") && isList.count("z"))) ||
+      (name == "face" && !isList.count("vertex_indices")))
+    {
+      return "has " + name + " elements without " +
+        (name == "face" ? "vertex_indices" : "x, y and z");
+    }
+  }
+  return seen.count("vertex") ? std::string() : "has no vertex element";
 }
 
 using Visitor = std::function<bool(const Element&, const std::vector<int64_t>&)>;
@@ -86,6 +147,27 @@ int64_t ReadInteger(const unsigned char* p, int size, bool isSigned, bool bigEnd
     value |= ~uint64_t(0) << (8 * size); // sign extension
   }
   return static_cast<int64_t>(value);
+}
+
+// Printable text in lines vtkPLY's 4096-byte buffer holds (with room for its own edits). vtkPLY
+// ends a line's words at a NUL byte and then reads past the words it found.
+bool IsLineText(const std::string& text)
+{
+  size_t line = 0;
+  for (const char c : text)
+  {
+    const auto u = static_cast<unsigned char>(c);
+    if ((u < 0x20 && c != '\t' && c != '\r' && c != '\n') || u >= 0x7f)
+    {
+      return false;
+    }
+    line = c == '\n' ? 0 : line + 1;
+    if (line > 4000)
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
 bool WalkBinary(const std::string& bytes, size_t offset, const std::vector<Element>& elements,
@@ -149,9 +231,15 @@ bool WalkASCII(const std::string& bytes, size_t offset, const std::vector<Elemen
   {
     for (uint64_t i = 0; i < element.Count; ++i)
     {
-      if (!std::getline(body, line))
+      // vtkPLY reads no line at the end of the file without its newline.
+      if (!std::getline(body, line) || body.eof())
       {
         problem = "is truncated (it has fewer " + element.Name + " lines than its header says)";
+        return false;
+      }
+      if ((element.Name == "vertex" || element.Name == "face") && !IsLineText(line))
+      {
+        problem = "is damaged (a " + element.Name + " line is not text, or too long)";
         return false;
       }
       std::istringstream words(line);
@@ -196,74 +284,99 @@ bool WalkASCII(const std::string& bytes, size_t offset, const std::vector<Elemen
   return true;
 }
 
-// The header's elements and format; false with a sentence when it is not a PLY header.
+// Adds an "element" or "property" line's words to `elements`; false with a sentence.
+bool AddElementOrProperty(const std::string& keyword, std::istringstream& words,
+  std::vector<Element>& elements, std::string& problem)
+{
+  if (keyword == "element")
+  {
+    Element element;
+    double count = -1.0;
+    words >> element.Name >> count;
+    if (!elements.empty() && elements.back().Properties.empty())
+    {
+      problem = "is damaged (element " + elements.back().Name + " has no properties)";
+      return false;
+    }
+    if (!(count >= 0.0 && count < 4e9))
+    {
+      problem = "is damaged (element " + element.Name + " has an invalid count)";
+      return false;
+    }
+    element.Count = static_cast<uint64_t>(count);
+    elements.push_back(element);
+    return true;
+  }
+  std::string type;
+  words >> type;
+  Property property;
+  bool known = false;
+  if (type == "list")
+  {
+    std::string countType, itemType;
+    words >> countType >> itemType;
+    Property count;
+    known = SetType(countType, count) && !count.Real && SetType(itemType, property);
+    property.CountSize = count.Size;
+  }
+  else
+  {
+    known = SetType(type, property);
+  }
+  words >> property.Name;
+  if (elements.empty() || !known || property.Name.empty())
+  {
+    problem = "is damaged (a property has an unknown type or no element)";
+    return false;
+  }
+  elements.back().Properties.push_back(property);
+  return true;
+}
+
+// The header's elements and format, read line by line as vtkPLY reads it (its header ends at
+// the first line without words); false with a sentence when it is not a good PLY header.
 bool ReadHeader(const std::string& bytes, std::vector<Element>& elements, std::string& format,
   size_t& bodyStart, std::string& problem)
 {
-  const size_t end = bytes.find("end_header");
-  if (bytes.compare(0, 3, "ply") != 0 || end == std::string::npos)
+  size_t at = 0;
+  std::string keyword;
+  while (keyword != "end_header")
   {
-    problem = "is not a PLY file (no ply ... end_header header)";
-    return false;
-  }
-  bodyStart = bytes.find('\n', end);
-  std::istringstream header(bytes.substr(0, end));
-  std::string line;
-  while (std::getline(header, line))
-  {
+    const size_t end = bytes.find('\n', at);
+    std::string line = bytes.substr(at, end == std::string::npos ? end : end - at);
+    // vtkPLY writes "vertex_indices" over a line from its first "vertex_index" on.
+    const size_t renamed = line.find("vertex_index");
+    line = renamed == std::string::npos ? line : line.substr(0, renamed) + "vertex_indices";
     std::istringstream words(line);
-    std::string keyword;
+    keyword.clear();
     words >> keyword;
+    problem = (at == 0 && keyword != "ply") ? "is not a PLY file (it does not start with 'ply')"
+      : !IsLineText(line)
+      ? "is damaged (its header has bytes that are not text, or too long a line)"
+      : end == std::string::npos ? "is truncated or not a PLY file (no end_header line)"
+      : keyword.empty()          ? "is damaged (a blank line in its header, before end_header)"
+                                 : "";
+    if (!problem.empty() ||
+      ((keyword == "element" || keyword == "property") &&
+        !AddElementOrProperty(keyword, words, elements, problem)))
+    {
+      return false;
+    }
     if (keyword == "format")
     {
       words >> format;
     }
-    else if (keyword == "element")
-    {
-      Element element;
-      double count = -1.0;
-      words >> element.Name >> count;
-      if (!(count >= 0.0 && count < 4e9))
-      {
-        problem = "is damaged (element " + element.Name + " has an invalid count)";
-        return false;
-      }
-      element.Count = static_cast<uint64_t>(count);
-      elements.push_back(element);
-    }
-    else if (keyword == "property")
-    {
-      std::string type;
-      words >> type;
-      Property property;
-      bool known = false;
-      if (type == "list")
-      {
-        std::string countType, itemType;
-        words >> countType >> itemType;
-        Property count;
-        known = SetType(countType, count) && !count.Real && SetType(itemType, property);
-        property.CountSize = count.Size;
-      }
-      else
-      {
-        known = SetType(type, property);
-      }
-      words >> property.Name;
-      if (elements.empty() || !known)
-      {
-        problem = "is damaged (a property has an unknown type or no element)";
-        return false;
-      }
-      elements.back().Properties.push_back(property);
-    }
+    at = end + 1;
   }
-  if (bodyStart == std::string::npos)
+  const std::string layout = elements.empty() || elements.back().Properties.empty()
+    ? "has an element without properties"
+    : CheckLayout(elements);
+  if (!layout.empty())
   {
-    problem = "is truncated (nothing after its header)";
+    problem = "is damaged (it " + layout + ", which VTK's PLY reader cannot read)";
     return false;
   }
-  ++bodyStart;
+  bodyStart = at;
   return true;
 }
 }
@@ -292,6 +405,12 @@ bool CheckPLY(const std::string& name, vtkCellArray* strips, std::string& error)
   const Visitor visit = [&](const Element& element, const std::vector<int64_t>& ids)
   {
     const bool isStrip = element.Name == "tristrips";
+    if (!isStrip && ids.size() > 255)
+    {
+      problem = "has face " + std::to_string(face) + " with " + std::to_string(ids.size()) +
+        " vertices, more than VTK's PLY reader reads (255)";
+      return false;
+    }
     for (size_t k = 0; k < ids.size(); ++k)
     {
       const int64_t id = ids[k];

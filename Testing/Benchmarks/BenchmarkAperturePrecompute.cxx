@@ -156,8 +156,6 @@ public:
   {
     vtkApertureRayScene::Context context;
     rtcInitIntersectContext(&context.Base);
-    if (getenv("COHERENT"))
-      context.Base.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
     context.Source = this->Rules;
     alignas(64) RTCRay16 ray;
     alignas(64) int valid[Lanes];
@@ -213,22 +211,16 @@ struct BareScene
     this->Scene = rtcNewScene(this->Device);
     rtcSetSceneFlags(this->Scene,
       static_cast<RTCSceneFlags>(RTC_SCENE_FLAG_ROBUST | (compact ? RTC_SCENE_FLAG_COMPACT : 0)));
-    rtcSetSceneBuildQuality(
-      this->Scene, getenv("HIGH") ? RTC_BUILD_QUALITY_HIGH : RTC_BUILD_QUALITY_MEDIUM);
+    rtcSetSceneBuildQuality(this->Scene, RTC_BUILD_QUALITY_MEDIUM);
     RTCGeometry geometry = rtcNewGeometry(this->Device, RTC_GEOMETRY_TYPE_TRIANGLE);
     rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
       surface.Vertices.data(), 0, 3 * sizeof(float), surface.GetNumberOfVertices());
     rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
       surface.Triangles.data(), 0, 3 * sizeof(std::uint32_t), surface.GetNumberOfTriangles());
-    if (getenv("HIGH"))
-      rtcSetGeometryBuildQuality(geometry, RTC_BUILD_QUALITY_HIGH);
     rtcCommitGeometry(geometry);
     rtcAttachGeometry(this->Scene, geometry);
     rtcReleaseGeometry(geometry);
-    auto t0 = std::chrono::steady_clock::now();
     rtcCommitScene(this->Scene);
-    fprintf(stderr, "build %.4f\n",
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   }
   ~BareScene()
   {
@@ -363,8 +355,6 @@ int main(int argc, char* argv[])
   std::printf("| contact and self-hit rules: bare loop with / without them (goal <= 1.10) | "
               "%.3f |\n",
     rulesFast / bareFast);
-  if (getenv("EARLY"))
-    return 0;
 
   for (const int structure : { vtkAperturePrecompute::AUTOMATIC, vtkAperturePrecompute::COMPACT })
   {

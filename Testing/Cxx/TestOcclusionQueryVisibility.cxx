@@ -50,6 +50,7 @@
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkWeakPointer.h"
 #include "vtkWindowToImageFilter.h"
 
 #include <cmath>
@@ -389,6 +390,50 @@ int TestOcclusionQueryVisibility(int argc, char* argv[])
   }
   const std::vector<unsigned char> after = Picture(window);
   Check(before == after, "the shared window renders the same picture afterwards");
+
+  // A window that renders the filter's output: the pipeline frees itself (the filter keeps no
+  // reference to the window), and the filter outlives the window it shared.
+  vtkWeakPointer<vtkOcclusionQueryVisibility> freed;
+  vtkSmartPointer<vtkPolyData> inWindow, afterWindow;
+  {
+    vtkNew<vtkOcclusionQueryVisibility> drawn;
+    freed = drawn;
+    vtkNew<vtkRenderWindow> loop;
+    loop->SetOffScreenRendering(1);
+    loop->SetSize(64, 64);
+    vtkNew<vtkRenderer> loopRenderer;
+    loop->AddRenderer(loopRenderer);
+    vtkNew<vtkPolyDataMapper> loopMapper;
+    loopMapper->SetInputConnection(drawn->GetOutputPort());
+    vtkNew<vtkActor> loopActor;
+    loopActor->SetMapper(loopMapper);
+    loopRenderer->AddActor(loopActor);
+    drawn->SetRenderWindow(loop);
+    inWindow = Run(bunny, vtkOcclusionQueryVisibility::DEPTH_COMPARE, 1, nullptr, drawn);
+    loop->Render();
+  }
+  Check(!freed, "a window drawing the filter's output does not keep the pipeline alive");
+  {
+    vtkNew<vtkOcclusionQueryVisibility> outlives;
+    {
+      vtkNew<vtkRenderWindow> gone;
+      gone->SetOffScreenRendering(1);
+      outlives->SetRenderWindow(gone);
+      Run(bunny, vtkOcclusionQueryVisibility::DEPTH_COMPARE, 1, nullptr, outlives);
+    }
+    Check(outlives->GetRenderWindow() == nullptr, "the filter forgets a window that is gone");
+    afterWindow = Run(bunny, vtkOcclusionQueryVisibility::DEPTH_COMPARE, 1, nullptr, outlives);
+  }
+  vtkDataArray* seenBefore = inWindow->GetPointData()->GetArray("Visibility");
+  vtkDataArray* seenAfter = afterWindow->GetPointData()->GetArray("Visibility");
+  vtkIdType differ = 0;
+  for (vtkIdType i = 0; seenBefore && seenAfter && i < seenBefore->GetNumberOfValues(); ++i)
+  {
+    differ += seenBefore->GetVariantValue(i) == seenAfter->GetVariantValue(i) ? 0 : 1;
+  }
+  Check(seenBefore && seenAfter && differ == 0 &&
+      seenBefore->GetNumberOfValues() == seenAfter->GetNumberOfValues(),
+    "the filter runs again, in its own window, once the shared one is gone: same visibility");
 
   // Progress and abort.
   vtkNew<vtkOcclusionQueryVisibility> watched;

@@ -394,7 +394,7 @@ int TestOpenEXRReader(int argc, char* argv[])
     for (int f = 0; f < flips; ++f)
     {
       const size_t at = static_cast<size_t>(random->GetNextValue() * (damaged.size() - 1));
-      damaged[at] = static_cast<char>(random->GetNextValue() * 256);
+      damaged[at] = static_cast<char>(static_cast<int>(random->GetNextValue() * 256) - 128);
     }
     Result r = Read("", &damaged);
     (r.Image ? readable : refused) += 1;

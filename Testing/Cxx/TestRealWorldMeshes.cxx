@@ -40,6 +40,7 @@
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
+#include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkMath.h"
@@ -62,6 +63,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <set>
@@ -664,6 +666,97 @@ void TestCreases(vtkPolyData* bunny)
 }
 
 //------------------------------------------------------------------------------
+// `mesh` with triangle t wound the other way where reverse(t).
+vtkSmartPointer<vtkPolyData> Rewound(
+  vtkPolyData* mesh, const std::function<bool(vtkIdType)>& reverse)
+{
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->DeepCopy(mesh);
+  out->GetPointData()->SetNormals(nullptr);
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType t = 0; t < out->GetNumberOfCells(); ++t)
+  {
+    out->GetCellPoints(t, ids);
+    if (reverse(t) && ids->GetNumberOfIds() == 3)
+    {
+      const vtkIdType flipped[3] = { ids->GetId(0), ids->GetId(2), ids->GetId(1) };
+      out->ReplaceCell(t, 3, flipped);
+    }
+  }
+  return out;
+}
+
+// Inconsistent winding: a third of the bunny's triangles reversed gives the bunny's own
+// visibility; two thirds reversed, the visibility of the bunny turned inside out (each piece
+// takes the winding most of its triangles have). Non-manifold edges run.
+void TestWinding(vtkPolyData* bunny)
+{
+  const vtkSmartPointer<vtkPolyData> outward = Rewound(bunny, [](vtkIdType) { return false; });
+  const vtkSmartPointer<vtkPolyData> inward = Rewound(bunny, [](vtkIdType) { return true; });
+  const vtkSmartPointer<vtkPolyData> third = Rewound(bunny, [](vtkIdType t) { return t % 3 == 0; });
+  const vtkSmartPointer<vtkPolyData> twoThirds =
+    Rewound(bunny, [](vtkIdType t) { return t % 3 != 0; });
+  for (Caster caster : { PRECOMPUTE, VISIBILITY, REFERENCE })
+  {
+    const std::string what = std::string(CasterNames[caster]) + ", inconsistent winding";
+    const Result out = Run(caster, outward, 64), in = Run(caster, inward, 64);
+    const Result mostlyOut = Run(caster, third, 64), mostlyIn = Run(caster, twoThirds, 64);
+    if (!out.Ok || !in.Ok || !mostlyOut.Ok || !mostlyIn.Ok ||
+      mostlyOut.Fraction.size() != out.Fraction.size() ||
+      mostlyIn.Fraction.size() != in.Fraction.size())
+    {
+      Check(false,
+        what + ": runs, with the bunny's points (" + out.Error + in.Error + mostlyOut.Error +
+          mostlyIn.Error + ")");
+      continue;
+    }
+    // The same surface points (the points a crease adds come in the cells' corner order); the
+    // bunny's points in no triangle have no estimate (NaN) from the reference.
+    const PositionIndex outIndex(out.Output), inIndex(in.Output);
+    auto difference = [](double a, double b)
+    { return std::isnan(a) && std::isnan(b) ? 0.0 : (std::isnan(a - b) ? 1.0 : std::abs(a - b)); };
+    double worstOut = 0.0, worstIn = 0.0, apart = 0.0;
+    for (vtkIdType i = 0; i < static_cast<vtkIdType>(out.Fraction.size()); ++i)
+    {
+      const vtkIdType o = outIndex.Find(out.Output, mostlyOut.Output, i);
+      const vtkIdType n = inIndex.Find(in.Output, mostlyIn.Output, i);
+      worstOut =
+        std::max(worstOut, o < 0 ? 1.0 : difference(mostlyOut.Fraction[i], out.Fraction[o]));
+      worstIn = std::max(worstIn, n < 0 ? 1.0 : difference(mostlyIn.Fraction[i], in.Fraction[n]));
+      apart += difference(out.Fraction[i], in.Fraction[i]) / out.Fraction.size();
+    }
+    std::cout << what << ": worst difference " << worstOut << " (a third reversed), " << worstIn
+              << " (two thirds); outward and inward differ by " << apart << " on average\n";
+    Check(worstOut < 1e-6, what + ": a third reversed is the bunny", worstOut, 0.0);
+    Check(worstIn < 1e-6, what + ": two thirds reversed is the bunny inside out", worstIn, 0.0);
+    Check(apart > 0.1, what + ": inside out differs from outside out", apart, 0.1);
+  }
+  // A pyramid with one side naming the wrong corner (non-manifold edges): apertures for all.
+  static const double corners[5][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 },
+    { 0.5, 0.5, 1 } };
+  static const vtkIdType faces[5][4] = { { 0, 3, 2, 1 }, { 0, 1, 4, -1 }, { 1, 3, 4, -1 },
+    { 2, 3, 4, -1 }, { 3, 0, 4, -1 } };
+  vtkNew<vtkPoints> points;
+  for (const double* p : corners)
+  {
+    points->InsertNextPoint(p);
+  }
+  vtkNew<vtkCellArray> polys;
+  for (const vtkIdType* f : faces)
+  {
+    polys->InsertNextCell(f[3] < 0 ? 3 : 4, f);
+  }
+  vtkNew<vtkPolyData> pyramid;
+  pyramid->SetPoints(points);
+  pyramid->SetPolys(polys);
+  for (Caster caster : { PRECOMPUTE, VISIBILITY, REFERENCE })
+  {
+    const Result r = Run(caster, pyramid, 16);
+    Check(r.Ok && r.Fraction.size() >= 5,
+      std::string(CasterNames[caster]) + ": a non-manifold pyramid gets its apertures");
+  }
+}
+
 // A 4 x 4 ground at z = 0 with a unit box standing on it (both refined to edges of 1/8): in one
 // polydata, the box's corners shared between its faces; with `welded`, the ground's points
 // under the box's edges are the same points as the box's.
@@ -931,6 +1024,27 @@ vtkSmartPointer<vtkPolyData> Groove(double opening)
   return pd;
 }
 
+// The fraction of a groove's bottom point i's directions (the visibility's light sphere) above
+// its tangent plane that see out of the groove, between walls `opening` apart: above both walls.
+double GrooveFraction(vtkPolyData* output, vtkIdType i, double opening)
+{
+  vtkDataArray* weights = output->GetFieldData()->GetArray("LightWeights");
+  vtkDataArray* directions = output->GetFieldData()->GetArray("LightDirections");
+  double normal[3], l[3], seen = 0.0, above = 0.0;
+  output->GetPointData()->GetNormals()->GetTuple(i, normal);
+  const double slope = std::tan(0.5 * (Pi - opening)); // the walls' rise
+  for (vtkIdType j = 0; j < directions->GetNumberOfTuples(); ++j)
+  {
+    directions->GetTuple(j, l);
+    if (vtkMath::Dot(normal, l) > 0.0)
+    {
+      above += weights->GetTuple1(j);
+      seen += l[2] > slope * std::abs(l[0]) ? weights->GetTuple1(j) : 0.0;
+    }
+  }
+  return above > 0.0 ? seen / above : 0.0;
+}
+
 void TestSelfHits(vtkPolyData* bunny)
 {
   std::set<vtkIdType> touched;
@@ -967,7 +1081,7 @@ void TestSelfHits(vtkPolyData* bunny)
   // Crevices stay dark: the bottom of a V groove sees the lune between its walls, 2 x opening,
   // a fraction opening / pi of a hemisphere. Cosine-weighted: (1 - cos opening) / 2 around a
   // wall's normal (the sides split at the crease), sin(opening / 2) around the bisector (one
-  // side, 150 degrees).
+  // side, 150 degrees). The visibility matrix: what its own directions see of the lune.
   for (const double degrees : { 60.0, 90.0, 150.0 })
   {
     const double opening = vtkMath::RadiansFromDegrees(degrees);
@@ -975,7 +1089,7 @@ void TestSelfHits(vtkPolyData* bunny)
     for (const Caster caster : { PRECOMPUTE, VISIBILITY, REFERENCE })
     {
       const Result r = Run(caster, groove, 1024);
-      double sum = 0.0;
+      double sum = 0.0, discrete = 0.0;
       int count = 0;
       for (vtkIdType i = 0; r.Ok && i < r.Output->GetNumberOfPoints(); ++i)
       {
@@ -983,11 +1097,14 @@ void TestSelfHits(vtkPolyData* bunny)
         if (p[0] == 0.0 && p[2] == 0.0 && std::abs(p[1]) < 2.0)
         {
           sum += r.Fraction[i];
+          discrete += caster == VISIBILITY ? GrooveFraction(r.Output, i, opening) : 0.0;
           ++count;
         }
       }
       const double got = sum / std::max(count, 1);
-      const double want = caster != REFERENCE
+      // The visibility matrix is exact for its own directions: what they see of the lune.
+      const double want = caster == VISIBILITY ? discrete / std::max(count, 1)
+        : caster == PRECOMPUTE
         ? opening / Pi
         : (degrees < 120.0 ? 0.5 * (1.0 - std::cos(opening)) : std::sin(0.5 * opening));
       std::cout << CasterNames[caster] << ", groove of " << degrees << " degrees: its bottom ("
@@ -1151,6 +1268,7 @@ int TestRealWorldMeshes(int argc, char* argv[])
   TestBadPointIds();
   TestSeams(bunny, temporary);
   TestCreases(bunny);
+  TestWinding(bunny);
   TestContacts();
   TestSelfHits(bunny);
   TestRefinement();

@@ -109,7 +109,7 @@ std::vector<char> Write(const Imath::Box2i& display, const Imath::Box2i& data,
 }
 
 //------------------------------------------------------------------------------
-std::vector<OpenEXRFuzzSeed> OpenEXRFuzzSeeds()
+std::vector<FuzzSeed> OpenEXRFuzzSeeds()
 {
   static const struct
   {
@@ -122,7 +122,7 @@ std::vector<OpenEXRFuzzSeed> OpenEXRFuzzSeeds()
     { Imf::DWAA_COMPRESSION, "dwaa" }, { Imf::DWAB_COMPRESSION, "dwab" } };
   const Imath::Box2i whole(Imath::V2i(0, 0), Imath::V2i(15, 7));
   const Imath::Box2i inside(Imath::V2i(3, 2), Imath::V2i(12, 6));
-  std::vector<OpenEXRFuzzSeed> seeds;
+  std::vector<FuzzSeed> seeds;
   for (const auto& c : compressions)
   {
     const std::string name = c.Name;

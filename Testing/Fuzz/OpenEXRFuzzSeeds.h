@@ -15,15 +15,10 @@
 #ifndef OpenEXRFuzzSeeds_h
 #define OpenEXRFuzzSeeds_h
 
-#include <string>
+#include "FuzzReplay.h"
+
 #include <vector>
 
-struct OpenEXRFuzzSeed
-{
-  std::string Name;
-  std::vector<char> Bytes;
-};
-
-std::vector<OpenEXRFuzzSeed> OpenEXRFuzzSeeds();
+std::vector<FuzzSeed> OpenEXRFuzzSeeds();
 
 #endif

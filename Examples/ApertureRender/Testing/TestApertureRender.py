@@ -319,7 +319,7 @@ for value, name in ((float("inf"), "bunny-inf.vtp"), (float("nan"), "bunny-nan.v
 # Bad point ids: a clear line, exit 1, whatever reader took the file.
 expect_failure("OBJ face past the points",
                [write_bytes("bad-face.obj", b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n"),
-                "-o", path("x.png")], 1, "uses point id")
+                "-o", path("x.png")], 1, "'f' names v 99, but there are 3")
 bad_ply = ("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
            "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
            "0 0 0\n1 0 0\n0 1 0\n3 0 1 500000\n")

@@ -1,0 +1,270 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    ApertureRenderMesh.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "ApertureRenderMesh.h"
+
+#include "ApertureRenderInput.h"
+#include "ApertureRenderMessages.h"
+#include "ApertureRenderOBJ.h"
+#include "ApertureRenderPLY.h"
+
+#include "vtkApertureCellCheck.h"
+#include "vtkCellArray.h"
+#include "vtkDataSetReader.h"
+#include "vtkDataSetSurfaceFilter.h"
+#include "vtkOBJReader.h"
+#include "vtkPLYReader.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSTLReader.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkXMLDataElement.h"
+#include "vtkXMLDataParser.h"
+#include "vtkXMLPolyDataReader.h"
+#include "vtksys/SystemTools.hxx"
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <new>
+#include <sstream>
+#include <vector>
+
+namespace ApertureRender
+{
+namespace
+{
+// The first cell whose point ids lie outside the points (a damaged file), or empty.
+std::string BadCell(vtkDataObject* data)
+{
+  if (auto* grid = vtkUnstructuredGrid::SafeDownCast(data))
+  {
+    return vtkApertureCellCheck::FindBadCell(grid);
+  }
+  auto* poly = vtkPolyData::SafeDownCast(data);
+  return poly ? vtkApertureCellCheck::FindBadCell(poly) : std::string();
+}
+
+// Points that are not finite: said once; the filter closes them and the view leaves out the
+// cells that use them.
+void NoteNonFinitePoints(Input& input)
+{
+  vtkPoints* points = input.Mesh->GetPoints();
+  for (vtkIdType i = 0; points && i < points->GetNumberOfPoints(); ++i)
+  {
+    const double* p = points->GetPoint(i);
+    input.NonFinitePoints +=
+      (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])) ? 0 : 1;
+  }
+  if (input.NonFinitePoints > 0)
+  {
+    input.Notes.push_back(std::to_string(input.NonFinitePoints) +
+      " point(s) are not finite (NaN or infinite): the cells that use them are left out");
+  }
+}
+
+// vtkSTLReader reads what a truncated binary file holds without a word; its header says how
+// many triangles there should be (50 bytes each after 84 bytes of header).
+bool CheckSTL(const std::string& name, std::string& error)
+{
+  if (vtksys::SystemTools::DetectFileType(name.c_str()) == vtksys::SystemTools::FileTypeText)
+  {
+    return true;
+  }
+  const unsigned long size = vtksys::SystemTools::FileLength(name);
+  unsigned char count[4] = { 0, 0, 0, 0 };
+  FILE* file = vtksys::SystemTools::Fopen(name, "rb");
+  const bool header =
+    file && std::fseek(file, 80, SEEK_SET) == 0 && std::fread(count, 1, 4, file) == 4;
+  if (file)
+  {
+    std::fclose(file);
+  }
+  const uint64_t triangles =
+    count[0] | (uint64_t(count[1]) << 8) | (uint64_t(count[2]) << 16) | (uint64_t(count[3]) << 24);
+  if (!header || size < 84 + 50 * triangles)
+  {
+    std::ostringstream what;
+    what << Quoted(name) << " is truncated (its header announces " << triangles << " triangles, "
+         << (size > 84 ? (size - 84) / 50 : 0) << " are there)";
+    error = what.str();
+    return false;
+  }
+  return true;
+}
+
+// vtkXMLPolyDataReader leaks the arrays of a piece whose points do not have 3 components: its
+// header is read first, and every piece's Points array checked.
+bool CheckVTP(vtkXMLPolyDataReader* reader, MessageCapture& messages, const std::string& name,
+  std::string& error)
+{
+  messages.Clear();
+  reader->UpdateInformation();
+  vtkXMLDataElement* root =
+    reader->GetXMLParser() ? reader->GetXMLParser()->GetRootElement() : nullptr;
+  vtkXMLDataElement* data = root ? root->FindNestedElementWithName("PolyData") : nullptr;
+  if (!messages.FirstError().empty() || !data)
+  {
+    error = "cannot read " + Quoted(name) + ": " + messages.FirstErrorOr("no PolyData element");
+    return false;
+  }
+  for (int i = 0; i < data->GetNumberOfNestedElements(); ++i)
+  {
+    vtkXMLDataElement* points = data->GetNestedElement(i)->FindNestedElementWithName("Points");
+    vtkXMLDataElement* array = points ? points->FindNestedElementWithName("DataArray") : nullptr;
+    int components = 1;
+    if (array && (!array->GetScalarAttribute("NumberOfComponents", components) || components != 3))
+    {
+      error = Quoted(name) + " is damaged (its points do not have 3 components)";
+      return false;
+    }
+  }
+  return true;
+}
+
+// Updates a reader; false with a sentence when it reports an error or runs out of memory (a
+// damaged count in a file can ask VTK's readers for any amount).
+bool Run(
+  vtkAlgorithm* reader, MessageCapture& messages, const std::string& name, std::string& error)
+{
+  messages.Clear();
+  try
+  {
+    reader->Update();
+  }
+  catch (const std::bad_alloc&)
+  {
+    error = "cannot read " + Quoted(name) + ": it asks for more memory than there is (damaged?)";
+    return false;
+  }
+  if (!messages.FirstError().empty() || !reader->GetOutputDataObject(0))
+  {
+    error = "cannot read " + Quoted(name) + ": " + messages.FirstErrorOr("unknown error");
+    return false;
+  }
+  const std::string bad = BadCell(reader->GetOutputDataObject(0));
+  if (!bad.empty())
+  {
+    error = Quoted(name) + " is damaged: " + bad;
+    return false;
+  }
+  return true;
+}
+
+// Legacy files may hold any dataset: its outer surface is shaded. vtkDataSetSurfaceFilter reads
+// through the cells' point ids, so the dataset is read and checked first.
+vtkSmartPointer<vtkAlgorithm> NewLegacySurface(
+  const std::string& name, MessageCapture& messages, std::string& error)
+{
+  auto legacy = vtkSmartPointer<vtkDataSetReader>::New();
+  legacy->SetFileName(name.c_str());
+  legacy->ReadAllScalarsOn();
+  legacy->ReadAllVectorsOn();
+  legacy->ReadAllNormalsOn();
+  legacy->ReadAllTCoordsOn();
+  legacy->ReadAllFieldsOn();
+  legacy->ReadAllColorScalarsOn();
+  const bool header = legacy->OpenVTKFile() && legacy->ReadHeader();
+  legacy->CloseVTKFile();
+  if (!header)
+  {
+    error = Quoted(name) + " is not a VTK legacy file";
+    return nullptr;
+  }
+  if (!Run(legacy, messages, name, error))
+  {
+    return nullptr;
+  }
+  auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
+  surface->SetInputConnection(legacy->GetOutputPort());
+  return surface;
+}
+
+// The reader for a file, after the checks its format needs; null with a sentence when the file
+// cannot be read. A PLY file's triangle strips go into `strips` (vtkPLYReader reads none).
+vtkSmartPointer<vtkAlgorithm> NewReader(const std::string& name, const std::string& extension,
+  MessageCapture& messages, vtkCellArray* strips, std::string& error)
+{
+  if (extension == ".obj" && CheckOBJ(name, error))
+  {
+    auto obj = vtkSmartPointer<vtkOBJReader>::New();
+    obj->SetFileName(name.c_str());
+    return obj;
+  }
+  if (extension == ".ply" && CheckPLY(name, strips, error))
+  {
+    auto ply = vtkSmartPointer<vtkPLYReader>::New();
+    ply->SetFileName(name.c_str());
+    return ply;
+  }
+  if (extension == ".stl" && CheckSTL(name, error))
+  {
+    auto stl = vtkSmartPointer<vtkSTLReader>::New();
+    stl->SetFileName(name.c_str());
+    return stl;
+  }
+  if (extension == ".vtp")
+  {
+    auto vtp = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    if (!vtp->CanReadFile(name.c_str()))
+    {
+      error = Quoted(name) + " is not a VTK XML polydata file";
+      return nullptr;
+    }
+    vtp->SetFileName(name.c_str());
+    return CheckVTP(vtp, messages, name, error) ? vtp : nullptr;
+  }
+  if (extension == ".vtk")
+  {
+    return NewLegacySurface(name, messages, error);
+  }
+  error = error.empty() ? Quoted(name) + " is not a mesh file this reads" : error;
+  return nullptr;
+}
+}
+
+bool LoadMesh(const std::string& name, const std::string& extension, MessageCapture& messages,
+  Input& input, std::string& error)
+{
+  vtkNew<vtkCellArray> strips;
+  vtkSmartPointer<vtkAlgorithm> reader = NewReader(name, extension, messages, strips, error);
+  if (!reader || !Run(reader, messages, name, error))
+  {
+    return false;
+  }
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->ShallowCopy(reader->GetOutputDataObject(0));
+  if (strips->GetNumberOfCells() > 0)
+  {
+    mesh->SetStrips(strips);
+  }
+  if (mesh->GetNumberOfPolys() + mesh->GetNumberOfStrips() == 0)
+  {
+    std::ostringstream what;
+    what << Quoted(name) << " has no polygons to shade (" << mesh->GetNumberOfPoints()
+         << " points, " << mesh->GetNumberOfLines() << " lines)";
+    error = what.str();
+    return false;
+  }
+  input.Mesh = mesh;
+  std::ostringstream description;
+  description << vtksys::SystemTools::GetFilenameName(name) << ": " << mesh->GetNumberOfPoints()
+              << " points, " << mesh->GetNumberOfPolys() << " polygons";
+  if (mesh->GetNumberOfStrips() > 0)
+  {
+    description << ", " << mesh->GetNumberOfStrips() << " triangle strips";
+  }
+  input.Description = description.str();
+  NoteNonFinitePoints(input);
+  return true;
+}
+}

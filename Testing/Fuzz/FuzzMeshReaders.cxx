@@ -1,0 +1,70 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    FuzzMeshReaders.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+// libFuzzer target for the mesh path: the first byte picks a format (.obj, .ply or .vtp), the
+// rest is the file, read as aperture-render reads it (VTK's readers behind the checks they need)
+// and, when it gives a mesh, vtkAperturePrecompute on it. Any input must end in apertures or a
+// reported error, without a crash, a leak or undefined behaviour.
+
+#include "FuzzMeshReaders.h"
+
+#include "ApertureRenderInput.h"
+#include "ApertureRenderMesh.h"
+#include "ApertureRenderMessages.h"
+
+#include "vtkAperturePrecompute.h"
+#include "vtkNew.h"
+#include "vtkObject.h"
+
+#include <unistd.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+bool ReadFuzzMesh(
+  const std::uint8_t* data, std::size_t size, ApertureRender::Input& input, std::string& error)
+{
+  static const char* const extensions[] = { ".obj", ".ply", ".vtp" };
+  if (size == 0)
+  {
+    error = "no format byte";
+    return false;
+  }
+  const std::string extension = extensions[data[0] % 3];
+  const std::string name =
+    "/tmp/aperture-fuzz-" + std::to_string(static_cast<long>(getpid())) + extension;
+  {
+    std::ofstream file(name, std::ios::binary);
+    file.write(reinterpret_cast<const char*>(data + 1), static_cast<std::streamsize>(size - 1));
+  }
+  ApertureRender::MessageCapture messages;
+  const bool read = ApertureRender::LoadMesh(name, extension, messages, input, error);
+  std::remove(name.c_str());
+  return read;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+  // Errors are the expected outcome for most inputs.
+  vtkObject::GlobalWarningDisplayOff();
+  ApertureRender::Input input;
+  std::string error;
+  if (ReadFuzzMesh(data, size, input, error))
+  {
+    vtkNew<vtkAperturePrecompute> apertures;
+    apertures->SetInputData(input.Mesh);
+    apertures->SetNumberOfRays(4);
+    apertures->Update();
+  }
+  return 0;
+}
