@@ -1,0 +1,771 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    vtkHorizonApertures.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkHorizonApertures.h"
+
+#include "vtkMath.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace
+{
+constexpr double Pi = vtkMath::Pi();
+constexpr double NoSample = -std::numeric_limits<double>::infinity();
+const double NotThere = std::numeric_limits<double>::quiet_NaN();
+
+// Adjacent lines swept together, so that at each major index they touch neighbouring texels.
+constexpr vtkIdType LinesPerGroup = 32;
+
+// The grid, checked, with its output extent resolved.
+struct Field
+{
+  const float* Heights;
+  const unsigned char* Valid;
+  vtkIdType Nx, Ny;
+  double Spacing[2];
+  vtkIdType Extent[4];
+  vtkIdType OutNx, OutNy;
+
+  bool IsValid(vtkIdType t) const
+  {
+    return (!this->Valid || this->Valid[t]) && std::isfinite(this->Heights[t]);
+  }
+
+  // The output index of texel (i, j), or -1 outside the output extent.
+  vtkIdType OutputIndex(vtkIdType i, vtkIdType j) const
+  {
+    if (i < this->Extent[0] || i > this->Extent[1] || j < this->Extent[2] || j > this->Extent[3])
+    {
+      return -1;
+    }
+    return (i - this->Extent[0]) + (j - this->Extent[2]) * this->OutNx;
+  }
+};
+
+bool CheckGrid(const vtkHorizonApertures::Grid& grid, Field& field, std::string& error)
+{
+  if (!grid.Heights || grid.Nx < 1 || grid.Ny < 1)
+  {
+    error = "The grid has no heights.";
+    return false;
+  }
+  if (!(grid.Dx > 0.0 && grid.Dy > 0.0 && std::isfinite(grid.Dx) && std::isfinite(grid.Dy)))
+  {
+    error = "The grid spacing must be positive and finite.";
+    return false;
+  }
+  if (grid.Sectors < 1 || !(grid.MaximumDistance > 0.0))
+  {
+    error = "Sectors and MaximumDistance must be positive.";
+    return false;
+  }
+  const vtkIdType* e = grid.OutputExtent;
+  const bool whole = e[1] < e[0] || e[3] < e[2];
+  if (!whole && (e[0] < 0 || e[1] >= grid.Nx || e[2] < 0 || e[3] >= grid.Ny))
+  {
+    error = "The output extent lies outside the grid.";
+    return false;
+  }
+  field = { grid.Heights, grid.Valid, grid.Nx, grid.Ny, { grid.Dx, grid.Dy },
+    { 0, grid.Nx - 1, 0, grid.Ny - 1 }, 0, 0 };
+  if (!whole)
+  {
+    std::copy(e, e + 4, field.Extent);
+  }
+  field.OutNx = field.Extent[1] - field.Extent[0] + 1;
+  field.OutNy = field.Extent[3] - field.Extent[2] + 1;
+  return true;
+}
+
+// ∂z/∂(axis) at texel t, index `at` of `n` along the axis: central, one-sided at an edge or
+// next to no-data, 0 without a valid neighbour.
+double Derivative(
+  const Field& f, vtkIdType t, vtkIdType at, vtkIdType n, vtkIdType stride, int axis)
+{
+  const bool previous = at > 0 && f.IsValid(t - stride);
+  const bool next = at + 1 < n && f.IsValid(t + stride);
+  const float* z = f.Heights;
+  if (previous && next)
+  {
+    return (z[t + stride] - double(z[t - stride])) / (2.0 * f.Spacing[axis]);
+  }
+  if (previous || next)
+  {
+    return (z[next ? t + stride : t] - double(z[next ? t : t - stride])) / f.Spacing[axis];
+  }
+  return 0.0;
+}
+
+// Normals and valid flags of the output extent; (0, 0, 1) for no-data texels.
+void ComputeNormals(const Field& f, std::vector<float>& normals, std::vector<unsigned char>& valid)
+{
+  normals.resize(3 * f.OutNx * f.OutNy);
+  valid.resize(f.OutNx * f.OutNy);
+  vtkSMPTools::For(0, f.OutNy,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType row = first; row < last; ++row)
+      {
+        const vtkIdType j = f.Extent[2] + row;
+        for (vtkIdType i = f.Extent[0]; i <= f.Extent[1]; ++i)
+        {
+          const vtkIdType t = i + j * f.Nx, o = f.OutputIndex(i, j);
+          valid[o] = f.IsValid(t) ? 1 : 0;
+          double n[3] = { 0.0, 0.0, 1.0 };
+          if (valid[o])
+          {
+            n[0] = -Derivative(f, t, i, f.Nx, 1, 0);
+            n[1] = -Derivative(f, t, j, f.Ny, f.Nx, 1);
+            vtkMath::Normalize(n);
+          }
+          std::copy(n, n + 3, &normals[3 * o]);
+        }
+      }
+    });
+}
+
+// What elevations 0 … a of a sector hold (given sin a, cos a): solid angle and ∫ω dω. `chord`
+// is (sin φ1 − sin φ0, cos φ0 − cos φ1), ∫ (cos φ, sin φ) dφ over the sector.
+inline void Deficit(
+  double dphi, const double chord[2], double a, double sinA, double cosA, double deficit[4])
+{
+  const double horizontal = 0.5 * (a + sinA * cosA); // ∫ cos² e de over 0 … a
+  deficit[0] += dphi * sinA;
+  deficit[1] += horizontal * chord[0];
+  deficit[2] += horizontal * chord[1];
+  deficit[3] += 0.5 * dphi * sinA * sinA;
+}
+
+// What a sector adds per texel: its width, ∫ (cos φ, sin φ) dφ over it, its middle direction.
+struct Sector
+{
+  double Dphi, Chord[2], Cos, Sin;
+
+  Sector() = default;
+  Sector(int sector, int sectors)
+  {
+    this->Dphi = 2.0 * Pi / sectors;
+    const double phi0 = sector * this->Dphi, phi1 = (sector + 1) * this->Dphi;
+    this->Chord[0] = std::sin(phi1) - std::sin(phi0);
+    this->Chord[1] = std::cos(phi0) - std::cos(phi1);
+    this->Cos = std::cos((sector + 0.5) * this->Dphi);
+    this->Sin = std::sin((sector + 0.5) * this->Dphi);
+  }
+};
+
+// The lines of a sector, and of its opposite sector (φ + π) when Count is 2: the same lines,
+// swept the other way. Line c holds, at major index m, the sample nearest to texel
+// (m, c + Nearest[m]) (major, minor), at minor offset Offset[m] from it.
+struct Lines
+{
+  Sector Sectors[2];
+  int Count;
+  int Major; // 0: i, 1: j
+  vtkIdType NMajor, NMinor, MajorStride, MinorStride;
+  int Step;         // Sectors[0]'s way along the major axis, +1 or -1
+  double Delta;     // world distance between samples
+  vtkIdType Window; // samples within MaximumDistance
+  std::vector<vtkIdType> Nearest;
+  std::vector<double> Offset;
+  vtkIdType FirstLine, LastLine;
+
+  Lines(const Field& f, const vtkHorizonApertures::Grid& grid, int sector, bool paired);
+
+  // Texel (major, minor) as (i, j).
+  void ToIJ(vtkIdType m, vtkIdType n, vtkIdType& i, vtkIdType& j) const
+  {
+    i = this->Major == 0 ? m : n;
+    j = this->Major == 0 ? n : m;
+  }
+
+private:
+  void SetWindow(double maximumDistance);
+};
+
+Lines::Lines(const Field& f, const vtkHorizonApertures::Grid& grid, int sector, bool paired)
+{
+  // Opposite sectors get their lines from the same one, so that they sample alike.
+  const int half = grid.Sectors % 2 == 0 ? grid.Sectors / 2 : grid.Sectors;
+  this->Count = paired ? 2 : 1;
+  this->Sectors[0] = Sector(sector, grid.Sectors);
+  if (paired)
+  {
+    this->Sectors[1] = Sector(sector + half, grid.Sectors);
+  }
+  const Sector base(sector % half, grid.Sectors);
+  this->Major = std::abs(base.Cos) / f.Spacing[0] >= std::abs(base.Sin) / f.Spacing[1] ? 0 : 1;
+  const double along = this->Major == 0 ? base.Cos : base.Sin;
+  const double across = this->Major == 0 ? base.Sin : base.Cos;
+  const double tau = // minor texels per major step
+    (across * f.Spacing[this->Major]) / (along * f.Spacing[1 - this->Major]);
+  this->NMajor = this->Major == 0 ? f.Nx : f.Ny;
+  this->NMinor = this->Major == 0 ? f.Ny : f.Nx;
+  this->MajorStride = this->Major == 0 ? 1 : f.Nx;
+  this->MinorStride = this->Major == 0 ? f.Nx : 1;
+  this->Step = (this->Major == 0 ? this->Sectors[0].Cos : this->Sectors[0].Sin) > 0.0 ? 1 : -1;
+  this->Delta = f.Spacing[this->Major] / std::abs(along);
+  this->Nearest.resize(this->NMajor);
+  this->Offset.resize(this->NMajor);
+  for (vtkIdType m = 0; m < this->NMajor; ++m)
+  {
+    const double x = double(m + grid.Origin[this->Major]) * tau;
+    const double nearest = std::floor(x + 0.5);
+    this->Nearest[m] = static_cast<vtkIdType>(nearest);
+    this->Offset[m] = x - nearest;
+  }
+  const auto range = std::minmax_element(this->Nearest.begin(), this->Nearest.end());
+  this->FirstLine = -*range.second;
+  this->LastLine = this->NMinor - 1 - *range.first;
+  this->SetWindow(grid.MaximumDistance);
+}
+
+// The largest w with w Delta <= MaximumDistance; past every line's length: unlimited.
+void Lines::SetWindow(double r)
+{
+  if (!(r < this->Delta * double(this->NMajor + 1)))
+  {
+    this->Window = this->NMajor + 1;
+    return;
+  }
+  vtkIdType w = static_cast<vtkIdType>(std::floor(r / this->Delta));
+  while (double(w + 1) * this->Delta <= r)
+  {
+    ++w;
+  }
+  while (w > 0 && double(w) * this->Delta > r)
+  {
+    --w;
+  }
+  this->Window = w;
+}
+
+// A line's samples in sweep order: sample k at Base[k * Step].
+struct Samples
+{
+  const double* Base;
+  vtkIdType Step;
+
+  double operator[](vtkIdType k) const { return this->Base[k * this->Step]; }
+};
+
+// A receiver's view along its line: sample indices, their heights Z, its index K and height.
+struct Viewpoint
+{
+  Samples Z;
+  vtkIdType K;
+  double Height;
+
+  // Whether sample a rises at least as high as sample b, seen from here.
+  bool AtLeast(vtkIdType a, vtkIdType b) const
+  {
+    return (this->Z[a] - this->Height) * double(this->K - b) >=
+      (this->Z[b] - this->Height) * double(this->K - a);
+  }
+
+  double Slope(vtkIdType a) const { return (this->Z[a] - this->Height) / double(this->K - a); }
+};
+
+// The steepest slope from a viewpoint to an upper hull, chain(0 … n − 1) from the farthest
+// point to the nearest: elevations along it rise to the tangent point and then fall.
+template <typename Chain>
+double Tangent(const Viewpoint& view, vtkIdType n, Chain chain)
+{
+  if (n == 0)
+  {
+    return NoSample;
+  }
+  vtkIdType low = 0, high = n - 1;
+  while (low < high)
+  {
+    const vtkIdType middle = (low + high) / 2;
+    if (view.AtLeast(chain(middle + 1), chain(middle)))
+    {
+      low = middle + 1;
+    }
+    else
+    {
+      high = middle;
+    }
+  }
+  return view.Slope(chain(low));
+}
+
+// Per-thread buffers: a group's samples (line-major), and the hulls of one line.
+struct Scratch
+{
+  std::vector<double> Occluder; // interpolated height; NaN: does not occlude
+  std::vector<double> Receiver; // the receiving texel's height; NaN: none
+  std::vector<double> Slope[2]; // out: steepest slope per sample step, per sector of the pass
+  std::vector<vtkIdType> Hull;
+  // Suffix hulls of the previous block: a stack, and per sample of the block, where its push
+  // wrote (-1: not pushed), what it overwrote, the stack size before it, and the highest
+  // occluder of its suffix.
+  std::vector<vtkIdType> Suffix, Position, Overwritten, Size;
+  std::vector<double> Highest;
+  vtkIdType HullSize = 0, SuffixFirst = 0, SuffixSize = 0;
+
+  // Sizes the buffers for a pass's groups, when a thread first takes one.
+  void Fit(vtkIdType lines, vtkIdType length, vtkIdType window, int sectors)
+  {
+    if (!this->Hull.empty())
+    {
+      return;
+    }
+    for (auto* v : { &this->Occluder, &this->Receiver, &this->Slope[0] })
+    {
+      v->resize(lines * length);
+    }
+    this->Slope[1].resize(sectors == 2 ? lines * length : 0);
+    this->Hull.resize(length);
+    for (auto* v : { &this->Suffix, &this->Position, &this->Overwritten, &this->Size })
+    {
+      v->resize(std::min(window, length));
+    }
+    this->Highest.resize(std::min(window, length));
+  }
+};
+
+// The steepest slope from every receiver of one line to the occluders before it within the
+// window (samples in sweep order).
+class LineSweep
+{
+public:
+  LineSweep(Scratch& s, vtkIdType window)
+    : S(s)
+    , Window(window)
+  {
+  }
+
+  // Sweeps samples 0 … n − 1 in that order, or `reversed`.
+  void Run(const double* z, const double* zr, double* slope, vtkIdType n, bool reversed);
+
+private:
+  double Prefix(const Viewpoint& view, bool occludes);
+  void BuildSuffixes(const Samples& z, vtkIdType first, vtkIdType last);
+  void Undo(vtkIdType s);
+
+  // No slope to the suffix in range is steeper than its highest occluder at the suffix's
+  // nearest (or, below the viewpoint, farthest) distance: most receivers need no search.
+  double SuffixBound(const Viewpoint& view) const
+  {
+    const vtkIdType first = view.K - this->Window, last = this->S.SuffixFirst + this->Window - 1;
+    const double rise = this->S.Highest[first - this->S.SuffixFirst] - view.Height;
+    return rise / double(view.K - (rise > 0.0 ? last : first));
+  }
+
+  Scratch& S;
+  vtkIdType Window;
+};
+
+void LineSweep::Run(const double* zs, const double* zrs, double* slopes, vtkIdType n, bool reversed)
+{
+  std::fill(slopes, slopes + n, NoSample);
+  if (this->Window < 1)
+  {
+    return;
+  }
+  const vtkIdType step = reversed ? -1 : 1, start = reversed ? n - 1 : 0;
+  const Samples z{ zs + start, step }, zr{ zrs + start, step };
+  bool suffixes = false;
+  for (vtkIdType k = 0, offset = 0; k < n;
+       ++k, offset = offset + 1 == this->Window ? 0 : offset + 1)
+  {
+    if (offset == 0)
+    {
+      this->S.HullSize = 0; // a new block: its own hull, and the suffixes of the block before
+      if (k > 0)
+      {
+        this->BuildSuffixes(z, k - this->Window, k);
+        suffixes = true;
+      }
+    }
+    else if (suffixes)
+    {
+      this->Undo(k - this->Window - 1);
+    }
+    const bool occludes = !std::isnan(z[k]), receives = !std::isnan(zr[k]);
+    if (!occludes && !receives)
+    {
+      continue;
+    }
+    const Viewpoint view{ z, k, receives ? zr[k] : z[k] };
+    double best = this->Prefix(view, occludes);
+    if (receives && suffixes && best < this->SuffixBound(view))
+    {
+      const vtkIdType* stack = this->S.Suffix.data();
+      const vtkIdType top = this->S.SuffixSize - 1;
+      best = std::max(best,
+        Tangent(view, this->S.SuffixSize, [stack, top](vtkIdType i) { return stack[top - i]; }));
+    }
+    slopes[start + k * step] = receives ? best : NoSample;
+  }
+}
+
+// The steepest slope from a viewpoint to the hull of its block so far; an occluding one is
+// pushed onto it, after popping the points under its tangent (the top is then the tangent).
+double LineSweep::Prefix(const Viewpoint& view, bool occludes)
+{
+  vtkIdType* hull = this->S.Hull.data();
+  vtkIdType& size = this->S.HullSize;
+  if (!occludes)
+  {
+    return Tangent(view, size, [hull](vtkIdType i) { return hull[i]; });
+  }
+  while (size >= 2 && view.AtLeast(hull[size - 2], hull[size - 1]))
+  {
+    --size;
+  }
+  const double best = size > 0 ? view.Slope(hull[size - 1]) : NoSample;
+  hull[size++] = view.K;
+  return best;
+}
+
+// The upper hulls of all suffixes of samples [first, last), by a backward sweep whose pushes
+// Undo() takes back one by one; afterwards the stack is the hull of the whole block.
+void LineSweep::BuildSuffixes(const Samples& z, vtkIdType first, vtkIdType last)
+{
+  Scratch& s = this->S;
+  vtkIdType size = 0;
+  double highest = NoSample;
+  for (vtkIdType k = last - 1; k >= first; --k)
+  {
+    const vtkIdType r = k - first;
+    s.Position[r] = -1;
+    highest = std::isnan(z[k]) ? highest : std::max(highest, z[k]);
+    s.Highest[r] = highest;
+    if (std::isnan(z[k]))
+    {
+      continue;
+    }
+    s.Size[r] = size;
+    // Pop the leftmost hull point when it is not strictly above the line from k to the next.
+    while (size >= 2)
+    {
+      const vtkIdType t = s.Suffix[size - 1], u = s.Suffix[size - 2];
+      if ((z[t] - z[k]) * double(u - k) > (z[u] - z[k]) * double(t - k))
+      {
+        break;
+      }
+      --size;
+    }
+    s.Position[r] = size;
+    s.Overwritten[r] = s.Suffix[size];
+    s.Suffix[size++] = k;
+  }
+  s.SuffixFirst = first;
+  s.SuffixSize = size;
+}
+
+// From the hull of the suffix starting at sample k to that of the suffix after it.
+void LineSweep::Undo(vtkIdType k)
+{
+  Scratch& s = this->S;
+  const vtkIdType r = k - s.SuffixFirst;
+  if (s.Position[r] >= 0)
+  {
+    s.Suffix[s.Position[r]] = s.Overwritten[r];
+    s.SuffixSize = s.Size[r];
+  }
+}
+
+// A group of adjacent lines [First, Last) over the major indices where one of them meets the
+// grid. Sample k of every line is at major index MajorAt(k), in sweep order.
+class Group
+{
+public:
+  Group(const Field& f, const Lines& lines, const std::vector<float>& normals, vtkIdType first,
+    vtkIdType last);
+
+  vtkIdType GetLength() const { return this->Length; }
+  vtkIdType GetNumberOfLines() const { return this->Last - this->First; }
+
+  // Fills the scratch with the heights of the group's samples and receivers.
+  void Gather(Scratch& s) const;
+
+  // Calls sink(output index, steepest slopes in world units, one per sector) for every
+  // receiver.
+  template <typename Sink>
+  void Scatter(const Scratch& s, const Sink& sink) const;
+
+private:
+  vtkIdType MajorAt(vtkIdType k) const { return this->L.Step > 0 ? this->High - k : this->Low + k; }
+  double Interpolate(vtkIdType t, vtkIdType minor, double offset) const;
+
+  const Field& F;
+  const Lines& L;
+  const std::vector<float>& Normals;
+  vtkIdType First, Last, Low = 0, High = -1, Length = 0;
+};
+
+Group::Group(const Field& f, const Lines& lines, const std::vector<float>& normals, vtkIdType first,
+  vtkIdType last)
+  : F(f)
+  , L(lines)
+  , Normals(normals)
+  , First(first)
+  , Last(last)
+{
+  for (vtkIdType m = 0; m < lines.NMajor; ++m)
+  {
+    if (first + lines.Nearest[m] < lines.NMinor && last - 1 + lines.Nearest[m] >= 0)
+    {
+      this->Low = this->Length == 0 ? m : this->Low;
+      this->High = m;
+      this->Length = this->High - this->Low + 1;
+    }
+  }
+}
+
+// The height of a sample whose nearest texel t (valid) is at `minor`; NaN where the other
+// texel is needed and is no-data or off the grid.
+double Group::Interpolate(vtkIdType t, vtkIdType minor, double offset) const
+{
+  const float* z = this->F.Heights;
+  if (offset == 0.0)
+  {
+    return z[t];
+  }
+  const vtkIdType way = offset > 0.0 ? 1 : -1;
+  const vtkIdType other = t + way * this->L.MinorStride;
+  if (minor + way < 0 || minor + way >= this->L.NMinor || !this->F.IsValid(other))
+  {
+    return NotThere;
+  }
+  return z[t] + std::abs(offset) * (double(z[other]) - z[t]);
+}
+
+void Group::Gather(Scratch& s) const
+{
+  const Lines& l = this->L;
+  const vtkIdType n = this->Length;
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    const vtkIdType m = this->MajorAt(k);
+    const double offset = l.Offset[m];
+    for (vtkIdType c = this->First; c < this->Last; ++c)
+    {
+      const vtkIdType minor = c + l.Nearest[m], at = (c - this->First) * n + k;
+      s.Occluder[at] = s.Receiver[at] = NotThere;
+      const vtkIdType t = m * l.MajorStride + minor * l.MinorStride;
+      if (minor < 0 || minor >= l.NMinor || !this->F.IsValid(t))
+      {
+        continue;
+      }
+      s.Occluder[at] = this->Interpolate(t, minor, offset);
+      vtkIdType i, j;
+      l.ToIJ(m, minor, i, j);
+      const vtkIdType o = this->F.OutputIndex(i, j);
+      if (o >= 0)
+      {
+        s.Receiver[at] = s.Occluder[at];
+      }
+      if (o >= 0 && std::isnan(s.Occluder[at])) // the texel's tangent plane at the sample
+      {
+        const float* normal = &this->Normals[3 * o];
+        const double rise = -normal[1 - l.Major] / normal[2] * this->F.Spacing[1 - l.Major];
+        s.Receiver[at] = this->F.Heights[t] + offset * rise;
+      }
+    }
+  }
+}
+
+template <typename Sink>
+void Group::Scatter(const Scratch& s, const Sink& sink) const
+{
+  const Lines& l = this->L;
+  const vtkIdType n = this->Length;
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    const vtkIdType m = this->MajorAt(k);
+    for (vtkIdType c = this->First; c < this->Last; ++c)
+    {
+      const vtkIdType at = (c - this->First) * n + k;
+      if (!std::isnan(s.Receiver[at]))
+      {
+        vtkIdType i, j;
+        l.ToIJ(m, c + l.Nearest[m], i, j);
+        const double slopes[2] = { s.Slope[0][at] / l.Delta,
+          l.Count == 2 ? s.Slope[1][at] / l.Delta : NoSample };
+        sink(this->F.OutputIndex(i, j), slopes);
+      }
+    }
+  }
+}
+
+// Sweeps all lines of a sector (or pair), groups in parallel.
+template <typename Sink>
+void SweepSector(
+  const Field& f, const Lines& lines, const std::vector<float>& normals, const Sink& sink)
+{
+  const vtkIdType groups = (lines.LastLine - lines.FirstLine + LinesPerGroup) / LinesPerGroup;
+  vtkSMPThreadLocal<Scratch> scratch;
+  vtkSMPTools::For(0, groups, 1,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      Scratch& s = scratch.Local();
+      s.Fit(LinesPerGroup, lines.NMajor, lines.Window, lines.Count);
+      LineSweep sweep(s, lines.Window);
+      for (vtkIdType g = begin; g < end; ++g)
+      {
+        const vtkIdType first = lines.FirstLine + g * LinesPerGroup;
+        const Group group(
+          f, lines, normals, first, std::min(first + LinesPerGroup, lines.LastLine + 1));
+        const vtkIdType n = group.GetLength();
+        if (n == 0)
+        {
+          continue;
+        }
+        group.Gather(s);
+        for (vtkIdType c = 0; c < group.GetNumberOfLines(); ++c)
+        {
+          for (int k = 0; k < lines.Count; ++k) // the opposite sector sweeps the other way
+          {
+            sweep.Run(&s.Occluder[c * n], &s.Receiver[c * n], &s.Slope[k][c * n], n, k == 1);
+          }
+        }
+        group.Scatter(s, sink);
+      }
+    });
+}
+
+// The per-texel deficit sums, in the output arrays until Finish() turns them into outputs.
+class Accumulator
+{
+public:
+  Accumulator(const Lines& lines, vtkHorizonApertures::Apertures& out)
+    : L(lines)
+    , Out(out)
+  {
+  }
+
+  void operator()(vtkIdType o, const double slopes[2]) const
+  {
+    const float* n = &this->Out.Normals[3 * o];
+    double deficit[4] = { 0.0, 0.0, 0.0, 0.0 };
+    for (int k = 0; k < this->L.Count; ++k)
+    {
+      const Sector& sector = this->L.Sectors[k];
+      const double tangent = -(n[0] * sector.Cos + n[1] * sector.Sin) / n[2];
+      const double top = std::max(slopes[k], tangent);
+      const double cosA = 1.0 / std::sqrt(1.0 + top * top);
+      Deficit(sector.Dphi, sector.Chord, std::atan(top), top * cosA, cosA, deficit);
+    }
+    this->Out.ApertureRadius[o] += static_cast<float>(deficit[0]);
+    for (int c = 0; c < 3; ++c)
+    {
+      this->Out.BentNormals[3 * o + c] += static_cast<float>(deficit[c + 1]);
+    }
+  }
+
+private:
+  const Lines& L;
+  vtkHorizonApertures::Apertures& Out;
+};
+
+// The open hemisphere less the deficits: radius, bent normal, ambient occlusion.
+void Finish(vtkHorizonApertures::Apertures& out)
+{
+  vtkSMPTools::For(0, out.Nx * out.Ny,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType o = first; o < last; ++o)
+      {
+        float* bent = &out.BentNormals[3 * o];
+        const float* n = &out.Normals[3 * o];
+        if (!out.Valid[o])
+        {
+          out.ApertureRadius[o] = out.AmbientOcclusion[o] = 0.0f;
+          std::copy(n, n + 3, bent);
+          continue;
+        }
+        const double solid = 2.0 * Pi - out.ApertureRadius[o];
+        double sum[3] = { -bent[0], -bent[1], Pi - bent[2] };
+        out.ApertureRadius[o] =
+          static_cast<float>(std::acos(vtkMath::ClampValue(1.0 - solid / (2.0 * Pi), -1.0, 1.0)));
+        const double ao = (n[0] * sum[0] + n[1] * sum[1] + n[2] * sum[2]) / Pi;
+        out.AmbientOcclusion[o] = static_cast<float>(vtkMath::ClampValue(ao, 0.0, 1.0));
+        if (vtkMath::Normalize(sum) == 0.0)
+        {
+          std::copy(n, n + 3, sum);
+        }
+        std::copy(sum, sum + 3, bent);
+      }
+    });
+}
+}
+
+//------------------------------------------------------------------------------
+bool vtkHorizonApertures::Compute(const Grid& grid, Apertures& output, std::string& error,
+  const std::function<bool(double fraction)>& progress)
+{
+  Field f;
+  if (!CheckGrid(grid, f, error))
+  {
+    return false;
+  }
+  output.Nx = f.OutNx;
+  output.Ny = f.OutNy;
+  ComputeNormals(f, output.Normals, output.Valid);
+  output.BentNormals.assign(3 * f.OutNx * f.OutNy, 0.0f);
+  output.ApertureRadius.assign(f.OutNx * f.OutNy, 0.0f);
+  output.AmbientOcclusion.assign(f.OutNx * f.OutNy, 0.0f);
+  // Opposite sectors share their lines: one pass gathers and scatters both.
+  const bool paired = grid.Sectors % 2 == 0;
+  const int passes = paired ? grid.Sectors / 2 : grid.Sectors;
+  for (int pass = 0; pass < passes; ++pass)
+  {
+    const Lines lines(f, grid, pass, paired);
+    SweepSector(f, lines, output.Normals, Accumulator(lines, output));
+    if (progress && !progress(double(pass + 1) / passes))
+    {
+      output = Apertures();
+      error = "The computation was aborted.";
+      return false;
+    }
+  }
+  Finish(output);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHorizonApertures::ComputeHorizons(
+  const Grid& grid, int sector, std::vector<float>& horizons, std::string& error)
+{
+  Field f;
+  if (!CheckGrid(grid, f, error))
+  {
+    return false;
+  }
+  if (sector < 0 || sector >= grid.Sectors)
+  {
+    error = "The sector is not one of the grid's.";
+    return false;
+  }
+  std::vector<float> normals;
+  std::vector<unsigned char> valid;
+  ComputeNormals(f, normals, valid);
+  horizons.assign(f.OutNx * f.OutNy, std::numeric_limits<float>::quiet_NaN());
+  float* h = horizons.data();
+  SweepSector(f, Lines(f, grid, sector, false), normals,
+    [h](vtkIdType o, const double slopes[2]) { h[o] = static_cast<float>(std::atan(slopes[0])); });
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkHorizonApertures::AddSectorDeficit(double phi0, double phi1, double a, double deficit[4])
+{
+  const double chord[2] = { std::sin(phi1) - std::sin(phi0), std::cos(phi0) - std::cos(phi1) };
+  Deficit(phi1 - phi0, chord, a, std::sin(a), std::cos(a), deficit);
+}
