@@ -15,12 +15,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <limits>
+#include <locale>
+#include <sstream>
 
 vtkStandardNewMacro(vtkSphericalCap);
 
 // Defined here too for C++11/14, where std::min and std::max taking it by reference need a
 // definition.
 constexpr double vtkSphericalCap::MinimumLightRadius;
+constexpr double vtkSphericalCap::MaximumLightRadius;
 
 namespace
 {
@@ -546,5 +551,26 @@ void vtkSphericalCap::PrintSelf(ostream& os, vtkIndent indent)
 //------------------------------------------------------------------------------
 double vtkSphericalCap::ClampLightRadius(double radius)
 {
-  return std::min(std::max(radius, MinimumLightRadius), 0.5 * Pi);
+  return std::min(std::max(radius, MinimumLightRadius), MaximumLightRadius);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkSphericalCap::GetGLSLConstants()
+{
+  std::ostringstream glsl;
+  glsl.imbue(std::locale::classic());
+  // Floats with the digits that give GLSL back the very same float.
+  glsl << std::scientific << std::setprecision(std::numeric_limits<float>::max_digits10 - 1);
+  glsl << "// vtkSphericalCap's constants (vtkSphericalCap::GetGLSLConstants()).\n"
+       << "const int sphericalCapExact = " << EXACT << ";\n"
+       << "const int sphericalCapSmoothstep = " << SMOOTHSTEP << ";\n"
+       << "const int sphericalCapSimplified = " << SIMPLIFIED << ";\n"
+       << "const int sphericalCapBentNormal = " << BENT_NORMAL << ";\n"
+       << "const int sphericalCapCentroid = " << CENTROID << ";\n"
+       << "const int sphericalCapMoment = " << MOMENT << ";\n"
+       << "const float sphericalCapMinimumLightRadius = " << static_cast<float>(MinimumLightRadius)
+       << ";\n"
+       << "const float sphericalCapMaximumLightRadius = " << static_cast<float>(MaximumLightRadius)
+       << ";\n";
+  return glsl.str();
 }

@@ -35,8 +35,8 @@
  * gives an empty intersection too. No method returns NaN or infinity.
  *
  * The GLSL twin (vtkSphericalCapGLSL.h, compiled in from vtkSphericalCapGLSL.glsl) declares the
- * same functions for shaders, named sphericalCapIntersectionArea() and so on; a test evaluates
- * them on the GPU and compares them with this class.
+ * same functions for shaders, named sphericalCapIntersectionArea() and so on, after the constants
+ * of GetGLSLConstants(); a test evaluates them on the GPU and compares them with this class.
  */
 
 #ifndef vtkSphericalCap_h
@@ -44,6 +44,8 @@
 
 #include "vtkApertureLightingModule.h" // For export macro
 #include "vtkObject.h"
+
+#include <string> // For std::string
 
 class VTKAPERTURELIGHTING_EXPORT vtkSphericalCap : public vtkObject
 {
@@ -138,15 +140,28 @@ public:
     MOMENT = 1    ///< exact for a light above the horizon: max(0, n · first moment)
   };
 
+  ///@{
   /**
-   * Smallest light radius the shading functions use (rad); smaller lights are treated as this.
+   * Smallest and largest light radius the shading functions use (rad): smaller lights are
+   * treated as the smallest, and a light is at most a hemisphere (π/2).
    */
   static constexpr double MinimumLightRadius = 1e-4;
+  static constexpr double MaximumLightRadius = 1.5707963267948966;
+  ///@}
 
   /**
-   * A light radius as the shading functions use it: within [MinimumLightRadius, π/2].
+   * A light radius as the shading functions use it: within [MinimumLightRadius,
+   * MaximumLightRadius]. The GLSL twin is sphericalCapClampLightRadius().
    */
   static double ClampLightRadius(double radius);
+
+  /**
+   * The GLSL declarations of this class's constants, which the GLSL twin needs before its own
+   * source: the Shading and Lambert values (sphericalCapExact, ..., sphericalCapMoment) and the
+   * light-radius bounds (sphericalCapMinimumLightRadius, sphericalCapMaximumLightRadius). Shaders
+   * get them from here so that they cannot drift from the C++.
+   */
+  static std::string GetGLSLConstants();
 
   /**
    * Irradiance at a point with normal n and aperture (bent, rp) from a light of angular radius

@@ -77,6 +77,109 @@ std::string ArrayProblem(vtkDataSet* data, const std::string& name, int componen
   }
   return std::string();
 }
+
+// Apertures reach the fragment shader as varyings in view coordinates, or as texture
+// coordinates in the per-texel mode (from the input's, or from the model coordinates).
+void ReplaceApertureVaryings(std::string& vs, std::string& gs, bool perTexel, bool inputTCoords)
+{
+  if (perTexel)
+  {
+    vtkShaderProgram::Substitute(vs, "//VTK::Normal::Dec",
+      std::string("//VTK::Normal::Dec\n") + (inputTCoords ? "in vec2 apertureTCoordMC;\n" : "") +
+        "uniform vec4 apertureTexTransform;\n"
+        "out vec2 apertureUVVSOutput;");
+    vtkShaderProgram::Substitute(vs, "//VTK::Normal::Impl",
+      std::string("//VTK::Normal::Impl\n") + "  apertureUVVSOutput = apertureTexTransform.xy * " +
+        (inputTCoords ? "apertureTCoordMC" : "vertexMC.xy") + " + apertureTexTransform.zw;");
+    vtkShaderProgram::Substitute(gs, "//VTK::Normal::Dec",
+      "//VTK::Normal::Dec\n"
+      "in vec2 apertureUVVSOutput[];\n"
+      "out vec2 apertureUVGSOutput;");
+    vtkShaderProgram::Substitute(gs, "//VTK::Normal::Impl",
+      "//VTK::Normal::Impl\n"
+      "apertureUVGSOutput = apertureUVVSOutput[i];");
+    return;
+  }
+  vtkShaderProgram::Substitute(vs, "//VTK::Normal::Dec",
+    "//VTK::Normal::Dec\n"
+    "in vec3 bentNormalMC;\n"
+    "in float apertureRadiusMC;\n"
+    "uniform mat3 apertureNormalMatrix;\n"
+    "out vec3 bentNormalVCVSOutput;\n"
+    "out float apertureRadiusVSOutput;");
+  vtkShaderProgram::Substitute(vs, "//VTK::Normal::Impl",
+    "//VTK::Normal::Impl\n"
+    "  bentNormalVCVSOutput = apertureNormalMatrix * bentNormalMC;\n"
+    "  apertureRadiusVSOutput = apertureRadiusMC;");
+  vtkShaderProgram::Substitute(gs, "//VTK::Normal::Dec",
+    "//VTK::Normal::Dec\n"
+    "in vec3 bentNormalVCVSOutput[];\n"
+    "in float apertureRadiusVSOutput[];\n"
+    "out vec3 bentNormalVCGSOutput;\n"
+    "out float apertureRadiusGSOutput;");
+  vtkShaderProgram::Substitute(gs, "//VTK::Normal::Impl",
+    "//VTK::Normal::Impl\n"
+    "bentNormalVCGSOutput = bentNormalVCVSOutput[i];\n"
+    "apertureRadiusGSOutput = apertureRadiusVSOutput[i];");
+}
+
+// The call of vtkApertureLightingFS.glsl that adds light i, with VTK's uniforms of that light,
+// which VTK names one by one (lightColor0, lightColor1, ...) rather than as arrays.
+std::string LightCall(int lightComplexity, int i)
+{
+  const std::string n = std::to_string(i);
+  const std::string cap = "apertureLightCap[" + n + "]";
+  if (lightComplexity == 1)
+  {
+    return "  apertureHeadlight(lightColor0, " + cap + ", fragment);\n";
+  }
+  if (lightComplexity == 2)
+  {
+    return "  apertureDirectionalLight(lightDirectionVC" + n + ", lightColor" + n + ", " + cap +
+      ", fragment);\n";
+  }
+  return "  aperturePositionalLight(lightDirectionVC" + n + ", lightColor" + n + ", " + cap +
+    ", lightPositional" + n + ", lightPositionVC" + n + ", lightAttenuation" + n +
+    ", lightConeAngle" + n + ", lightExponent" + n + ", apertureLightWorldRadius[" + n +
+    "], fragment);\n";
+}
+
+// The lighting of main(): the fragment's aperture, its lights, then its colour.
+std::string FragmentImplementation(int lightComplexity, int lightCount)
+{
+  std::string impl = "  apertureFragment fragment =\n"
+                     "    apertureBeginFragment(normalVCVSOutput, vertexVC.xyz, specularPower);\n";
+  for (int i = 0; i < lightCount; ++i)
+  {
+    impl += LightCall(lightComplexity, i);
+  }
+  return impl +
+    "  gl_FragData[0] =\n"
+    "    apertureEndFragment(fragment, ambientColor, diffuseColor, specularColor, opacity);\n"
+    "  //VTK::Light::Impl\n";
+}
+
+// The sky's matrix: view coordinates to world (the camera's rotation, transposed), then to the
+// environment; transposed, as SetUniformMatrix() hands GL a row-major matrix for a column-major
+// one.
+void ViewToEnvironment(vtkEnvironmentMap* environment, vtkRenderer* renderer, vtkMatrix3x3* result)
+{
+  double toEnvironment[9];
+  environment->GetWorldToEnvironment(toEnvironment);
+  vtkMatrix4x4* view = renderer->GetActiveCamera()->GetModelViewTransformMatrix();
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      double sum = 0.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        sum += toEnvironment[3 * i + k] * view->GetElement(j, k);
+      }
+      result->SetElement(j, i, sum);
+    }
+  }
+}
 }
 
 //------------------------------------------------------------------------------
@@ -107,7 +210,8 @@ void vtkApertureLightingInterface::SetShadingMode(int mode)
 //------------------------------------------------------------------------------
 void vtkApertureLightingInterface::SetLambertMode(int mode)
 {
-  mode = std::min(std::max(mode, 0), 1);
+  mode = std::min(std::max(mode, static_cast<int>(vtkSphericalCap::CENTROID)),
+    static_cast<int>(vtkSphericalCap::MOMENT));
   if (mode != this->LambertMode)
   {
     this->LambertMode = mode;
@@ -278,186 +382,33 @@ bool vtkApertureLightingInterface::ReplaceShaderLight(
   std::string vs = shaders[vtkShader::Vertex]->GetSource();
   std::string gs = shaders[vtkShader::Geometry]->GetSource();
   std::string fs = shaders[vtkShader::Fragment]->GetSource();
-
-  // Apertures reach the fragment shader as varyings in view coordinates, or as texture
-  // coordinates in the per-texel mode.
-  if (perTexel)
-  {
-    vtkShaderProgram::Substitute(vs, "//VTK::Normal::Dec",
-      std::string("//VTK::Normal::Dec\n") + (inputTCoords ? "in vec2 apertureTCoordMC;\n" : "") +
-        "uniform vec4 apertureTexTransform;\n"
-        "out vec2 apertureUVVSOutput;");
-    vtkShaderProgram::Substitute(vs, "//VTK::Normal::Impl",
-      std::string("//VTK::Normal::Impl\n") + "  apertureUVVSOutput = apertureTexTransform.xy * " +
-        (inputTCoords ? "apertureTCoordMC" : "vertexMC.xy") + " + apertureTexTransform.zw;");
-    vtkShaderProgram::Substitute(gs, "//VTK::Normal::Dec",
-      "//VTK::Normal::Dec\n"
-      "in vec2 apertureUVVSOutput[];\n"
-      "out vec2 apertureUVGSOutput;");
-    vtkShaderProgram::Substitute(gs, "//VTK::Normal::Impl",
-      "//VTK::Normal::Impl\n"
-      "apertureUVGSOutput = apertureUVVSOutput[i];");
-  }
-  else
-  {
-    vtkShaderProgram::Substitute(vs, "//VTK::Normal::Dec",
-      "//VTK::Normal::Dec\n"
-      "in vec3 bentNormalMC;\n"
-      "in float apertureRadiusMC;\n"
-      "uniform mat3 apertureNormalMatrix;\n"
-      "out vec3 bentNormalVCVSOutput;\n"
-      "out float apertureRadiusVSOutput;");
-    vtkShaderProgram::Substitute(vs, "//VTK::Normal::Impl",
-      "//VTK::Normal::Impl\n"
-      "  bentNormalVCVSOutput = apertureNormalMatrix * bentNormalMC;\n"
-      "  apertureRadiusVSOutput = apertureRadiusMC;");
-    vtkShaderProgram::Substitute(gs, "//VTK::Normal::Dec",
-      "//VTK::Normal::Dec\n"
-      "in vec3 bentNormalVCVSOutput[];\n"
-      "in float apertureRadiusVSOutput[];\n"
-      "out vec3 bentNormalVCGSOutput;\n"
-      "out float apertureRadiusGSOutput;");
-    vtkShaderProgram::Substitute(gs, "//VTK::Normal::Impl",
-      "//VTK::Normal::Impl\n"
-      "bentNormalVCGSOutput = bentNormalVCVSOutput[i];\n"
-      "apertureRadiusGSOutput = apertureRadiusVSOutput[i];");
-  }
-
-  std::ostringstream dec;
-  dec << static_cast<vtkOpenGLRenderer*>(renderer)->GetLightingUniforms() << "\n"
-      << "#define APERTURE_SHADING " << this->ShadingMode << "\n"
-      << "#define APERTURE_LAMBERT " << this->LambertMode << "\n"
-      << (this->SkyEnvironment ? "#define APERTURE_SKY_ENVIRONMENT\n" : "") << vtkSphericalCapGLSL
-      << "\n"
-      << vtkApertureLightingFS << "\n"
-      << "uniform vec3 apertureSkyColor;\n"
-      << "uniform int apertureSkyCosine;\n";
-  if (perTexel)
-  {
-    dec << "uniform sampler2D apertureTexture;\n"
-           "uniform mat3 apertureNormalMatrix;\n"
-           "in vec2 apertureUVVSOutput;\n";
-  }
-  else
-  {
-    dec << "in vec3 bentNormalVCVSOutput;\n"
-           "in float apertureRadiusVSOutput;\n";
-  }
-  for (int i = 0; i < lightCount; ++i)
-  {
-    dec << "uniform vec3 apertureLightCap" << i << ";\n";
-    if (lightComplexity >= 3)
-    {
-      dec << "uniform float lightWorldRadius" << i << ";\n";
-    }
-  }
-  dec << "//VTK::Light::Dec\n";
-  vtkShaderProgram::Substitute(fs, "//VTK::Light::Dec", dec.str());
-
-  std::ostringstream impl;
-  if (perTexel)
-  {
-    impl << "  vec4 apertureSample = texture(apertureTexture, apertureUVVSOutput);\n"
-            "  vec3 apertureBent = apertureNormalMatrix * apertureSample.xyz;\n"
-            "  float apertureRadius = apertureSample.w;\n";
-  }
-  else
-  {
-    impl << "  vec3 apertureBent = bentNormalVCVSOutput;\n"
-            "  float apertureRadius = apertureRadiusVSOutput;\n";
-  }
-  // Back faces see the aperture mirrored, as their normal is; interpolation may shorten the
-  // bent normal to nothing, where the normal stands in.
-  // Back faces see the aperture mirrored, as their normal is.
-  impl << "  if (gl_FrontFacing == false) { apertureBent = -apertureBent; }\n"
-          "  sphericalCapCap aperture = apertureCap(apertureBent, apertureRadius, "
-          "normalVCVSOutput);\n"
-          "  vec3 apertureView = normalize(-vertexVC.xyz);\n"
-          "  vec3 diffuse = vec3(0.0);\n"
-          "  vec3 specular = vec3(0.0);\n"
-          "  float apertureCovered = 0.0;\n";
-  for (int i = 0; i < lightCount; ++i)
-  {
-    // apertureLightCapN holds the radius of a light's cap and the sine and cosine of its half.
-    const std::string cap = "apertureLightCap" + std::to_string(i);
-    if (lightComplexity == 1)
-    {
-      // The headlight shines along the view direction.
-      impl << "  apertureAddLight(normalVCVSOutput, aperture, sphericalCapCap(vec3(0.0, 0.0, 1.0), "
-           << cap << ".x, " << cap << ".y, " << cap
-           << ".z), lightColor0, apertureView, specularPower, true, diffuse, specular, "
-              "apertureCovered);\n";
-    }
-    else if (lightComplexity == 2)
-    {
-      impl << "  apertureAddLight(normalVCVSOutput, aperture, sphericalCapCap(-lightDirectionVC"
-           << i << ", " << cap << ".x, " << cap << ".y, " << cap << ".z), lightColor" << i
-           << ", apertureView, specularPower, false, diffuse, specular, apertureCovered);\n";
-    }
-    else
-    {
-      // Positional lights: VTK's attenuation and spot cone; a world-space radius gives the cap
-      // asin(R/D) at this fragment.
-      const std::string n = std::to_string(i);
-      impl << "  {\n"
-              "    sphericalCapCap light = sphericalCapCap(-lightDirectionVC"
-           << n << ", " << cap << ".x, " << cap << ".y, " << cap << ".z);\n"
-           << "    float attenuation = 1.0;\n"
-              "    if (lightPositional"
-           << n
-           << " != 0)\n"
-              "    {\n"
-              "      vec3 toLight = lightPositionVC"
-           << n
-           << " - vertexVC.xyz;\n"
-              "      float distanceVC = length(toLight);\n"
-              "      light.axis = toLight / distanceVC;\n"
-              "      if (lightWorldRadius"
-           << n
-           << " > 0.0)\n"
-              "      {\n"
-              "        light = apertureSphereLightCap(light.axis, lightWorldRadius"
-           << n
-           << ", distanceVC);\n"
-              "      }\n"
-              "      attenuation = 1.0 / (lightAttenuation"
-           << n << ".x + lightAttenuation" << n << ".y * distanceVC + lightAttenuation" << n
-           << ".z * distanceVC * distanceVC);\n"
-              "      if (lightConeAngle"
-           << n
-           << " < 90.0)\n"
-              "      {\n"
-              "        float coneDot = dot(-light.axis, lightDirectionVC"
-           << n
-           << ");\n"
-              "        attenuation *= coneDot >= cos(radians(lightConeAngle"
-           << n << "))\n          ? pow(coneDot, lightExponent" << n
-           << ") : 0.0;\n"
-              "      }\n"
-              "    }\n"
-              "    apertureAddLight(normalVCVSOutput, aperture, light, attenuation * lightColor"
-           << n
-           << ", apertureView, specularPower, false, diffuse, specular, apertureCovered);\n"
-              "  }\n";
-    }
-  }
-  impl << "  if (aperture.radius >= 0.0)\n"
-          "  {\n"
-          "    diffuse += apertureSkyColor * "
-       << (this->SkyEnvironment ? "apertureSkyEnvironment" : "sphericalCapSkyShade")
-       << "(aperture, apertureCovered, dot(normalVCVSOutput, aperture.axis), apertureSkyCosine != "
-          "0);\n"
-          "  }\n"
-          "  diffuse = diffuse * diffuseColor;\n"
-          "  specular = specular * specularColor;\n"
-          "  gl_FragData[0] = vec4(ambientColor + diffuse + specular, opacity);\n"
-          "  //VTK::Light::Impl\n";
-  vtkShaderProgram::Substitute(fs, "//VTK::Light::Impl", impl.str(), false);
-
+  ReplaceApertureVaryings(vs, gs, perTexel, inputTCoords);
+  vtkShaderProgram::Substitute(
+    fs, "//VTK::Light::Dec", this->GetFragmentDeclarations(renderer, lightCount, perTexel));
+  vtkShaderProgram::Substitute(
+    fs, "//VTK::Light::Impl", FragmentImplementation(lightComplexity, lightCount), false);
   shaders[vtkShader::Vertex]->SetSource(vs);
   shaders[vtkShader::Geometry]->SetSource(gs);
   shaders[vtkShader::Fragment]->SetSource(fs);
   return true;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkApertureLightingInterface::GetFragmentDeclarations(
+  vtkRenderer* renderer, int lightCount, bool perTexel)
+{
+  std::ostringstream dec;
+  dec << static_cast<vtkOpenGLRenderer*>(renderer)->GetLightingUniforms() << "\n"
+      << vtkSphericalCap::GetGLSLConstants() << "#define APERTURE_SHADING " << this->ShadingMode
+      << "\n"
+      << "#define APERTURE_LAMBERT " << this->LambertMode << "\n"
+      << "#define APERTURE_LIGHT_COUNT " << lightCount << "\n"
+      << (perTexel ? "#define APERTURE_PER_TEXEL\n" : "")
+      << (this->SkyEnvironment ? "#define APERTURE_SKY_ENVIRONMENT\n" : "") << vtkSphericalCapGLSL
+      << "\n"
+      << vtkApertureLightingFS << "\n"
+      << "//VTK::Light::Dec\n";
+  return dec.str();
 }
 
 //------------------------------------------------------------------------------
@@ -488,6 +439,15 @@ void vtkApertureLightingInterface::SetShaderParameters(vtkShaderProgram* program
   {
     program->SetUniformMatrix("apertureNormalMatrix", normalMatrix);
   }
+  this->SetSkyParameters(program, renderer);
+  this->SetLightParameters(program, renderer);
+  this->SetTextureParameters(program, renderer, inputTCoords, shift, scale);
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingInterface::SetSkyParameters(
+  vtkShaderProgram* program, vtkRenderer* renderer)
+{
   if (program->IsUniformUsed("apertureSkyColor"))
   {
     const float sky[3] = { static_cast<float>(this->SkyColor[0] * this->SkyIntensity),
@@ -507,31 +467,28 @@ void vtkApertureLightingInterface::SetShaderParameters(vtkShaderProgram* program
   }
   if (program->IsUniformUsed("apertureSkyMatrix") && this->SkyEnvironment)
   {
-    // View coordinates to world (the camera's rotation, transposed), then to the environment;
-    // set transposed, as SetUniformMatrix() hands GL a row-major matrix for a column-major one.
-    double toEnvironment[9];
-    this->SkyEnvironment->GetWorldToEnvironment(toEnvironment);
-    vtkMatrix4x4* view = renderer->GetActiveCamera()->GetModelViewTransformMatrix();
     vtkNew<vtkMatrix3x3> matrix;
-    for (int i = 0; i < 3; ++i)
-    {
-      for (int j = 0; j < 3; ++j)
-      {
-        double sum = 0.0;
-        for (int k = 0; k < 3; ++k)
-        {
-          sum += toEnvironment[3 * i + k] * view->GetElement(j, k);
-        }
-        matrix->SetElement(j, i, sum);
-      }
-    }
+    ViewToEnvironment(this->SkyEnvironment, renderer, matrix);
     program->SetUniformMatrix("apertureSkyMatrix", matrix);
   }
+}
 
-  // Light sizes, in the order the renderer numbers its switched-on lights.
+//------------------------------------------------------------------------------
+void vtkApertureLightingInterface::SetLightParameters(
+  vtkShaderProgram* program, vtkRenderer* renderer)
+{
+  const bool setCaps = program->IsUniformUsed("apertureLightCap");
+  const bool setWorldRadii = program->IsUniformUsed("apertureLightWorldRadius");
+  if (!setCaps && !setWorldRadii)
+  {
+    return;
+  }
+  // Light sizes, in the order the renderer numbers its switched-on lights. Arrays longer than
+  // the shader's lose their excess to GL.
+  std::vector<float> caps;
+  std::vector<float> worldRadii;
   vtkLightCollection* lights = renderer->GetLights();
   vtkCollectionSimpleIterator it;
-  int index = 0;
   lights->InitTraversal(it);
   while (vtkLight* light = lights->GetNextLight(it))
   {
@@ -541,55 +498,59 @@ void vtkApertureLightingInterface::SetShaderParameters(vtkShaderProgram* program
     }
     const double radius = GetLightRadius(light);
     const bool world = light->GetPositional() && radius >= 0.0;
-    const std::string capName = "apertureLightCap" + std::to_string(index);
-    const std::string worldName = "lightWorldRadius" + std::to_string(index);
-    if (program->IsUniformUsed(capName.c_str()))
-    {
-      // The angular radius as the shading functions clamp it, with the sine and cosine of its half
-      // computed here once rather than per fragment.
-      const double r =
-        std::min(std::max(radius >= 0.0 && !world ? radius : this->DefaultLightRadius,
-                   vtkSphericalCap::MinimumLightRadius),
-          0.5 * vtkMath::Pi());
-      const float cap[3] = { static_cast<float>(r), static_cast<float>(std::sin(0.5 * r)),
-        static_cast<float>(std::cos(0.5 * r)) };
-      program->SetUniform3f(capName.c_str(), cap);
-    }
-    if (program->IsUniformUsed(worldName.c_str()))
-    {
-      program->SetUniformf(worldName.c_str(), static_cast<float>(world ? radius : -1.0));
-    }
-    ++index;
+    // The angular radius as the shading functions clamp it, with the sine and cosine of its half
+    // computed here once rather than per fragment.
+    const double r = vtkSphericalCap::ClampLightRadius(
+      radius >= 0.0 && !world ? radius : this->DefaultLightRadius);
+    caps.insert(caps.end(),
+      { static_cast<float>(r), static_cast<float>(std::sin(0.5 * r)),
+        static_cast<float>(std::cos(0.5 * r)) });
+    worldRadii.push_back(static_cast<float>(world ? radius : -1.0));
   }
-
-  if (program->IsUniformUsed("apertureTexture") && this->ApertureImage)
+  const int count = static_cast<int>(worldRadii.size());
+  if (setCaps && count > 0)
   {
-    this->UploadTexture(renderer);
-    this->Texture->Activate();
-    program->SetUniformi("apertureTexture", this->Texture->GetTextureUnit());
-    // Texel centres hold the grid points: u = (s + 1/2)/n for grid coordinate s, and
-    // s = (x - origin)/spacing for x = vertexMC/scale + shift.
-    int dims[3];
-    this->ApertureImage->GetDimensions(dims);
-    const double* spacing = this->ApertureImage->GetSpacing();
-    const double* origin = this->ApertureImage->GetOrigin();
-    float transform[4];
-    for (int k = 0; k < 2; ++k)
-    {
-      const double n = dims[k];
-      if (inputTCoords)
-      {
-        transform[k] = static_cast<float>((n - 1.0) / n);
-        transform[k + 2] = static_cast<float>(0.5 / n);
-      }
-      else
-      {
-        transform[k] = static_cast<float>(1.0 / (spacing[k] * n * scale[k]));
-        transform[k + 2] = static_cast<float>((0.5 + (shift[k] - origin[k]) / spacing[k]) / n);
-      }
-    }
-    program->SetUniform4f("apertureTexTransform", transform);
+    program->SetUniform3fv("apertureLightCap", count, caps.data());
   }
+  if (setWorldRadii && count > 0)
+  {
+    program->SetUniform1fv("apertureLightWorldRadius", count, worldRadii.data());
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingInterface::SetTextureParameters(vtkShaderProgram* program,
+  vtkRenderer* renderer, bool inputTCoords, const double shift[3], const double scale[3])
+{
+  if (!program->IsUniformUsed("apertureTexture") || !this->ApertureImage)
+  {
+    return;
+  }
+  this->UploadTexture(renderer);
+  this->Texture->Activate();
+  program->SetUniformi("apertureTexture", this->Texture->GetTextureUnit());
+  // Texel centres hold the grid points: u = (s + 1/2)/n for grid coordinate s, and
+  // s = (x - origin)/spacing for x = vertexMC/scale + shift.
+  int dims[3];
+  this->ApertureImage->GetDimensions(dims);
+  const double* spacing = this->ApertureImage->GetSpacing();
+  const double* origin = this->ApertureImage->GetOrigin();
+  float transform[4];
+  for (int k = 0; k < 2; ++k)
+  {
+    const double n = dims[k];
+    if (inputTCoords)
+    {
+      transform[k] = static_cast<float>((n - 1.0) / n);
+      transform[k + 2] = static_cast<float>(0.5 / n);
+    }
+    else
+    {
+      transform[k] = static_cast<float>(1.0 / (spacing[k] * n * scale[k]));
+      transform[k + 2] = static_cast<float>((0.5 + (shift[k] - origin[k]) / spacing[k]) / n);
+    }
+  }
+  program->SetUniform4f("apertureTexTransform", transform);
 }
 
 //------------------------------------------------------------------------------
@@ -691,7 +652,9 @@ void vtkApertureLightingInterface::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ShadingMode: " << this->GetShadingModeAsString() << "\n";
-  os << indent << "LambertMode: " << (this->LambertMode ? "Moment" : "Centroid") << "\n";
+  os << indent
+     << "LambertMode: " << (this->LambertMode == vtkSphericalCap::MOMENT ? "Moment" : "Centroid")
+     << "\n";
   os << indent << "BentNormalArrayName: " << this->BentNormalArrayName << "\n";
   os << indent << "ApertureRadiusArrayName: " << this->ApertureRadiusArrayName << "\n";
   os << indent << "SkyColor: " << this->SkyColor[0] << ", " << this->SkyColor[1] << ", "

@@ -47,6 +47,7 @@
 #include "vtkObject.h"
 #include "vtkShader.h"       // For vtkShader::Type
 #include "vtkSmartPointer.h" // For vtkSmartPointer
+#include "vtkSphericalCap.h" // For the shading models
 
 #include <map>    // For std::map
 #include <string> // For std::string
@@ -73,15 +74,16 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
-   * Shading models: the first four are vtkSphericalCap's; STANDARD is VTK's own lighting.
+   * Shading models: the first four are vtkSphericalCap's, which the shaders also get their
+   * values from; STANDARD is VTK's own lighting.
    */
   enum ShadingModes
   {
-    EXACT = 0,
-    SMOOTHSTEP = 1,
-    SIMPLIFIED = 2,
-    BENT_NORMAL = 3,
-    STANDARD = 4
+    EXACT = vtkSphericalCap::EXACT,
+    SMOOTHSTEP = vtkSphericalCap::SMOOTHSTEP,
+    SIMPLIFIED = vtkSphericalCap::SIMPLIFIED,
+    BENT_NORMAL = vtkSphericalCap::BENT_NORMAL,
+    STANDARD
   };
 
   ///@{
@@ -105,8 +107,8 @@ public:
    */
   virtual void SetLambertMode(int mode);
   vtkGetMacro(LambertMode, int);
-  void SetLambertModeToCentroid() { this->SetLambertMode(0); }
-  void SetLambertModeToMoment() { this->SetLambertMode(1); }
+  void SetLambertModeToCentroid() { this->SetLambertMode(vtkSphericalCap::CENTROID); }
+  void SetLambertModeToMoment() { this->SetLambertMode(vtkSphericalCap::MOMENT); }
   ///@}
 
   ///@{
@@ -245,7 +247,7 @@ protected:
   ~vtkApertureLightingInterface() override;
 
   int ShadingMode = EXACT;
-  int LambertMode = 0;
+  int LambertMode = vtkSphericalCap::CENTROID;
   std::string BentNormalArrayName = "BentNormal";
   std::string ApertureRadiusArrayName = "ApertureRadius";
   double SkyColor[3] = { 1.0, 1.0, 1.0 };
@@ -259,6 +261,14 @@ private:
   vtkApertureLightingInterface(const vtkApertureLightingInterface&) = delete;
   void operator=(const vtkApertureLightingInterface&) = delete;
 
+  // The fragment shader's declarations: VTK's lighting uniforms, the GLSL sources and the
+  // defines that configure them.
+  std::string GetFragmentDeclarations(vtkRenderer* renderer, int lightCount, bool perTexel);
+  // The parts of SetShaderParameters().
+  void SetSkyParameters(vtkShaderProgram* program, vtkRenderer* renderer);
+  void SetLightParameters(vtkShaderProgram* program, vtkRenderer* renderer);
+  void SetTextureParameters(vtkShaderProgram* program, vtkRenderer* renderer, bool inputTCoords,
+    const double shift[3], const double scale[3]);
   void UploadTexture(vtkRenderer* renderer);
   // Builds the environment sky's table and uploads it as a 3D texture, when the environment's
   // image or blur changed.

@@ -1,7 +1,33 @@
-// ApertureLighting: one light seen through a point's aperture, for vtkApertureLightingInterface.
-// Needs vtkSphericalCapGLSL and the defines APERTURE_SHADING and APERTURE_LAMBERT. The caps are
-// prepared once, the aperture per fragment and the light per light, so that the shading itself
-// needs no trigonometry outside the penumbra.
+// ApertureLighting: the lights and the sky seen through a fragment's aperture, for
+// vtkApertureLightingInterface. Needs vtkSphericalCap::GetGLSLConstants(), vtkSphericalCapGLSL
+// and VTK's lighting uniforms first, and these defines: APERTURE_SHADING and APERTURE_LAMBERT
+// (vtkSphericalCap's model and Lambert factor), APERTURE_LIGHT_COUNT, and optionally
+// APERTURE_PER_TEXEL (apertures from a texture) and APERTURE_SKY_ENVIRONMENT (the sky from an
+// environment). The caps are prepared once, the aperture per fragment and the light per light,
+// so that the shading itself needs no trigonometry outside the penumbra.
+//
+// main() calls apertureBeginFragment(), one light function per light (VTK names each light's
+// uniforms apart: lightColor0, lightColor1, ...), then apertureEndFragment().
+
+uniform vec3 apertureSkyColor;
+uniform int apertureSkyCosine;
+
+// Per light, in the order the renderer numbers its switched-on lights: the radius of its cap and
+// the sine and cosine of its half (computed once on the CPU), and the world-space radius of a
+// positional light (-1 for none).
+uniform vec3 apertureLightCap[APERTURE_LIGHT_COUNT];
+uniform float apertureLightWorldRadius[APERTURE_LIGHT_COUNT];
+
+// Apertures reach the fragment shader as varyings in view coordinates, or as texture coordinates
+// in the per-texel mode.
+#ifdef APERTURE_PER_TEXEL
+uniform sampler2D apertureTexture;
+uniform mat3 apertureNormalMatrix;
+in vec2 apertureUVVSOutput;
+#else
+in vec3 bentNormalVCVSOutput;
+in float apertureRadiusVSOutput;
+#endif
 
 // The aperture at a fragment: the bent normal made unit (the normal n stands in where
 // interpolation shortened it to nothing) and the radius clamped to pi/2. A negative radius marks
@@ -13,43 +39,123 @@ sphericalCapCap apertureCap(vec3 bent, float rp, vec3 n)
     length > 1e-6 ? bent / length : n, clamp(rp, -1.0, 0.5 * sphericalCapPi));
 }
 
-// The cap of a sphere light of radius R whose centre is D away, asin(R/D) (pi/2 inside it), at
-// least sphericalCapMinimumLightRadius; the half-angle sine and cosine come from R/D by the
+// The cap of a sphere light of radius R whose centre is D away, asin(R/D) (pi/2 inside it), as
+// sphericalCapClampLightRadius() clamps it; the half-angle sine and cosine come from R/D by the
 // half-angle formulas.
 sphericalCapCap apertureSphereLightCap(vec3 L, float R, float D)
 {
   float s = D > R ? R / D : 1.0;
   float c = D > R ? sqrt((D - R) * (D + R)) / D : 0.0;
   float r = sphericalCapAtan2(s, c);
+  if (!(r > sphericalCapMinimumLightRadius))
+  {
+    return sphericalCapMakeCap(L, sphericalCapClampLightRadius(r));
+  }
   float halfCos = sqrt(0.5 * (1.0 + c));
-  const float rMin = sphericalCapMinimumLightRadius;
-  return r > rMin ? sphericalCapCap(L, r, 0.5 * s / halfCos, halfCos)
-                  : sphericalCapCap(L, rMin, 0.5 * rMin, 1.0);
+  return sphericalCapCap(L, r, 0.5 * s / halfCos, halfCos);
 }
 
-// Adds a light of colour `color` (VTK's intensity times colour) to the diffuse and specular sums,
-// and the part of the aperture it covers to `covered`; n is the unit normal in view coordinates.
-// The highlight is VTK's (Phong, or n.L to the power for the headlight) dimmed by the part of the
-// light the point sees. A point without an aperture is lit as by VTK's standard lighting.
-void apertureAddLight(vec3 n, sphericalCapCap aperture, sphericalCapCap light, vec3 color,
-  vec3 viewDir, float specularPower, bool headlight, inout vec3 diffuse, inout vec3 specular,
-  inout float covered)
+// What a fragment gathers: its unit normal, position and direction to the eye in view
+// coordinates, its specular power and aperture, and the sums over the lights (the diffuse and
+// specular light, and the part of the aperture the lights cover).
+struct apertureFragment
 {
+  vec3 normal;
+  vec3 position;
+  vec3 view;
+  float specularPower;
+  sphericalCapCap aperture;
+  vec3 diffuse;
+  vec3 specular;
+  float covered;
+};
+
+// A fragment with its aperture and no light yet; n is the unit normal in view coordinates.
+apertureFragment apertureBeginFragment(vec3 n, vec3 position, float specularPower)
+{
+#ifdef APERTURE_PER_TEXEL
+  vec4 apertureSample = texture(apertureTexture, apertureUVVSOutput);
+  vec3 bent = apertureNormalMatrix * apertureSample.xyz;
+  float radius = apertureSample.w;
+#else
+  vec3 bent = bentNormalVCVSOutput;
+  float radius = apertureRadiusVSOutput;
+#endif
+  // Back faces see the aperture mirrored, as their normal is.
+  if (gl_FrontFacing == false)
+  {
+    bent = -bent;
+  }
+  return apertureFragment(n, position, normalize(-position), specularPower,
+    apertureCap(bent, radius, n), vec3(0.0), vec3(0.0), 0.0);
+}
+
+// Adds a light of colour `color` (VTK's intensity times colour) to the fragment's sums, and the
+// part of the aperture it covers. The highlight is VTK's (Phong, or n.L to the power for the
+// headlight) dimmed by the part of the light the point sees. A point without an aperture is lit
+// as by VTK's standard lighting.
+void apertureAddLight(inout apertureFragment f, sphericalCapCap light, vec3 color, bool headlight)
+{
+  vec3 n = f.normal;
   vec3 L = light.axis;
   float df = max(0.0, dot(n, L));
   float transfer = df;
   float seen = 1.0;
-  if (aperture.radius >= 0.0)
+  if (f.aperture.radius >= 0.0)
   {
     float coverage;
-    transfer = sphericalCapShade(APERTURE_SHADING, APERTURE_LAMBERT, n, aperture, light, coverage);
-    covered += coverage;
+    transfer =
+      sphericalCapShade(APERTURE_SHADING, APERTURE_LAMBERT, n, f.aperture, light, coverage);
+    f.covered += coverage;
     seen = clamp(coverage / (4.0 * sphericalCapPi * light.halfSin * light.halfSin), 0.0, 1.0);
   }
-  diffuse += transfer * color;
-  float sf = headlight ? pow(df, specularPower)
-                       : sign(df) * pow(max(0.0, dot(reflect(-L, n), viewDir)), specularPower);
-  specular += sf * seen * color;
+  f.diffuse += transfer * color;
+  float sf = headlight
+    ? pow(df, f.specularPower)
+    : sign(df) * pow(max(0.0, dot(reflect(-L, n), f.view)), f.specularPower);
+  f.specular += sf * seen * color;
+}
+
+// The headlight (light complexity 1) shines along the view direction; cap is its
+// apertureLightCap.
+void apertureHeadlight(vec3 color, vec3 cap, inout apertureFragment f)
+{
+  apertureAddLight(f, sphericalCapCap(vec3(0.0, 0.0, 1.0), cap.x, cap.y, cap.z), color, true);
+}
+
+// A directional light of light complexity 2 (light kits), shining along direction.
+void apertureDirectionalLight(vec3 direction, vec3 color, vec3 cap, inout apertureFragment f)
+{
+  apertureAddLight(f, sphericalCapCap(-direction, cap.x, cap.y, cap.z), color, false);
+}
+
+// A light of light complexity 3, with VTK's uniforms of that light: a positional one gets VTK's
+// attenuation and spot cone, and a world-space radius (worldRadius > 0) gives it the cap
+// asin(R/D) at this fragment.
+void aperturePositionalLight(vec3 direction, vec3 color, vec3 cap, int positional,
+  vec3 position, vec3 attenuationCoefficients, float coneAngle, float exponent,
+  float worldRadius, inout apertureFragment f)
+{
+  sphericalCapCap light = sphericalCapCap(-direction, cap.x, cap.y, cap.z);
+  float attenuation = 1.0;
+  if (positional != 0)
+  {
+    vec3 toLight = position - f.position;
+    float distanceVC = length(toLight);
+    light.axis = toLight / distanceVC;
+    if (worldRadius > 0.0)
+    {
+      light = apertureSphereLightCap(light.axis, worldRadius, distanceVC);
+    }
+    vec3 k = attenuationCoefficients;
+    attenuation = 1.0 / (k.x + k.y * distanceVC + k.z * distanceVC * distanceVC);
+    if (coneAngle < 90.0)
+    {
+      float coneDot = dot(-light.axis, direction);
+      attenuation *= coneDot >= cos(radians(coneAngle)) ? pow(coneDot, exponent) : 0.0;
+    }
+  }
+  apertureAddLight(f, light, attenuation * color, false);
 }
 
 #ifdef APERTURE_SKY_ENVIRONMENT
@@ -78,3 +184,25 @@ vec3 apertureSkyEnvironment(
     (cosineWeighted ? clamp(cosNormalBent, 0.0, 1.0) : 1.0);
 }
 #endif
+
+// The fragment's colour: the sky through the part of the aperture the lights leave uncovered
+// (none for a point without an aperture), then VTK's colours and opacity.
+vec4 apertureEndFragment(apertureFragment f, vec3 ambientColor, vec3 diffuseColor,
+  vec3 specularColor, float opacity)
+{
+  vec3 diffuse = f.diffuse;
+  if (f.aperture.radius >= 0.0)
+  {
+    float cosNormalBent = dot(f.normal, f.aperture.axis);
+#ifdef APERTURE_SKY_ENVIRONMENT
+    diffuse += apertureSkyColor *
+      apertureSkyEnvironment(f.aperture, f.covered, cosNormalBent, apertureSkyCosine != 0);
+#else
+    diffuse += apertureSkyColor *
+      sphericalCapSkyShade(f.aperture, f.covered, cosNormalBent, apertureSkyCosine != 0);
+#endif
+  }
+  diffuse = diffuse * diffuseColor;
+  vec3 specular = f.specular * specularColor;
+  return vec4(ambientColor + diffuse + specular, opacity);
+}

@@ -1,6 +1,8 @@
 // ApertureLighting: spherical-cap geometry for shaders, the GLSL twin of vtkSphericalCap.
 // Same formulas, same input policy: angles clamped to [0, pi], NaN arguments and zero-length
 // axes give empty intersections, nothing returns NaN. See vtkSphericalCap.h for the maths.
+// Needs vtkSphericalCap::GetGLSLConstants() first: the shading models, the Lambert factors and
+// the light-radius bounds come from the C++ class, so that the two cannot drift apart.
 
 const float sphericalCapPi = 3.14159265358979;
 
@@ -311,16 +313,6 @@ float sphericalCapSphereLightIrradiance(float sigma, float theta)
   return max(e, 0.0);
 }
 
-float sphericalCapSphereLightCapRadius(float radius, float dist)
-{
-  if (!(radius > 0.0) || isnan(dist))
-  {
-    return 0.0;
-  }
-  return dist <= radius ? 0.5 * sphericalCapPi
-                        : sphericalCapAtan2(radius, sqrt((dist - radius) * (dist + radius)));
-}
-
 // (cos d - cos(rp + rl)) / (cos|rp - rl| - cos(rp + rl)), clamped to [0, 1], with the cosine
 // differences written as sine products so that small caps keep their precision.
 float sphericalCapSimplifiedRamp(float rp, float rl, float d)
@@ -357,14 +349,12 @@ float sphericalCapSimplifiedShadowFactor(float rp, float rl, float d)
   return ramp * share;
 }
 
-// Shading models and Lambert factors, as in vtkSphericalCap::Shading and ::Lambert.
-const int sphericalCapExact = 0;
-const int sphericalCapSmoothstep = 1;
-const int sphericalCapSimplified = 2;
-const int sphericalCapBentNormal = 3;
-const int sphericalCapCentroid = 0;
-const int sphericalCapMoment = 1;
-const float sphericalCapMinimumLightRadius = 1e-4;
+// vtkSphericalCap::ClampLightRadius(): a light radius as the shading uses it. NaN is the
+// caller's to test.
+float sphericalCapClampLightRadius(float rl)
+{
+  return clamp(rl, sphericalCapMinimumLightRadius, sphericalCapMaximumLightRadius);
+}
 
 // The middle of the overlap of crossing caps, light and aperture, along the great circle through
 // their axes, which are d apart with half chord hc and half sum hs: a cheap stand-in for the lens
@@ -386,10 +376,11 @@ vec3 sphericalCapOverlapMiddle(sphericalCapCap light, sphericalCapCap aperture, 
 }
 
 // vtkSphericalCap::LightTransfer() and, in coverage, vtkSphericalCap::LightCoverage(), for a unit
-// (or zero) normal un and caps whose radii are clamped (rp <= pi/2, sphericalCapMinimumLightRadius
-// <= rl <= pi/2). Everything derives from the half-angle sines and cosines of the two radii and the
-// half chord between the axes, sin(d/2), which also classifies the caps (cosines near 1 cannot
-// tell nearly equal small caps apart), and only crossing caps, the penumbra, need angles at all.
+// (or zero) normal un and caps whose radii are clamped (rp <= pi/2, rl by
+// sphericalCapClampLightRadius()). Everything derives from the half-angle sines and cosines of
+// the two radii and the half chord between the axes, sin(d/2), which also classifies the caps
+// (cosines near 1 cannot tell nearly equal small caps apart), and only crossing caps, the
+// penumbra, need angles at all.
 // Shaders that prepare their caps once per fragment call this directly.
 float sphericalCapShade(int shading, int lambert, vec3 un, sphericalCapCap aperture,
   sphericalCapCap light, out float coverage)
@@ -477,7 +468,7 @@ float sphericalCapLightTransfer(int shading, int lambert, vec3 n, vec3 bent, flo
   }
   return sphericalCapShade(shading, lambert, un,
     sphericalCapMakeCap(ub, clamp(rp, 0.0, 0.5 * sphericalCapPi)),
-    sphericalCapMakeCap(ul, clamp(rl, sphericalCapMinimumLightRadius, 0.5 * sphericalCapPi)),
+    sphericalCapMakeCap(ul, sphericalCapClampLightRadius(rl)),
     coverage);
 }
 

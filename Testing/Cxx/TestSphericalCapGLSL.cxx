@@ -286,7 +286,8 @@ int TestSphericalCapGLSL(int, char*[])
   auto axes3Tex = Upload(win, width, height, axes3);
 
   std::string fs = EvaluatorFS;
-  vtkShaderProgram::Substitute(fs, "//VTK::SphericalCap::Dec", vtkSphericalCapGLSL);
+  vtkShaderProgram::Substitute(
+    fs, "//VTK::SphericalCap::Dec", vtkSphericalCap::GetGLSLConstants() + vtkSphericalCapGLSL);
   vtkOpenGLQuadHelper quad(win, nullptr, fs.c_str(), "");
   if (!quad.Program || !quad.Program->GetCompiled())
   {
