@@ -16,6 +16,7 @@
 #include "vtkApertureRayScene.h"
 #include "vtkApertureRefinement.h"
 #include "vtkApertureSurface.h"
+#include "vtkHorizonHeightField.h"
 #include "vtkMortonOrder.h"
 #include "vtkSphericalCap.h"
 
@@ -28,11 +29,13 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -162,6 +165,18 @@ struct Receiver
   vtkDataSet* Source() const { return this->Refined ? this->Refined.Get() : this->Input; }
 };
 
+// The part `extent` of an image, with every point array: the grid a tile's output is.
+void CopyExtent(vtkImageData* input, const int extent[6], vtkImageData* output)
+{
+  output->SetExtent(const_cast<int*>(extent));
+  output->SetOrigin(input->GetOrigin());
+  output->SetSpacing(input->GetSpacing());
+  output->SetDirectionMatrix(input->GetDirectionMatrix());
+  output->GetPointData()->CopyAllocate(input->GetPointData(), output->GetNumberOfPoints());
+  output->GetPointData()->CopyStructuredData(input->GetPointData(), input->GetExtent(), extent);
+  output->GetFieldData()->ShallowCopy(input->GetFieldData());
+}
+
 // Points on no polygon or strip look along their given normal, or +z.
 void OpenAroundNormals(
   vtkFloatArray* bent, const std::vector<vtkIdType>& outputPoints, vtkDataArray* normals)
@@ -196,11 +211,13 @@ public:
   bool CollectReceivers(vtkDataObject* input, vtkDataObject* output);
   bool CheckReceivers();
   void CollectOccluders(vtkInformationVector* occluderInfo);
+  bool ChooseMethod();
+  bool SweepHorizons(const int extent[6]);
   bool Refine();
   bool BuildSurfaces();
   bool BuildScene();
   bool Cast();
-  void WriteOutputs();
+  void WriteOutputs(const int* extent);
   void Warn();
 
   vtkAperturePrecompute* Self;
@@ -209,6 +226,8 @@ public:
   std::vector<vtkApertureSurface> OccluderSurfaces;
   vtkApertureRayScene Scene;
   vtkIdType TotalPoints = 0;
+  vtkIdType NoData = 0;
+  bool Horizons = false;
   bool Aborted = false;
 };
 
@@ -320,6 +339,62 @@ void vtkAperturePrecompute::vtkRun::CollectOccluders(vtkInformationVector* occlu
       this->Occluders.push_back(occluder);
     }
   }
+}
+
+//------------------------------------------------------------------------------
+// Horizon sweeps for one height field without occluders; rays for everything else.
+bool vtkAperturePrecompute::vtkRun::ChooseMethod()
+{
+  const bool heightField =
+    this->Receivers.size() == 1 && vtkImageData::SafeDownCast(this->Receivers[0]->Input);
+  const bool possible = heightField && this->Occluders.empty();
+  if (this->Self->Method == HORIZONS && !possible)
+  {
+    vtkErrorWithObjectMacro(this->Self,
+      "Horizon sweeps need a height field (vtkImageData) and no occluders; "
+        << (heightField ? "there are occluders." : "the input is not a height field."));
+    return false;
+  }
+  this->Horizons = possible && this->Self->Method != RAYS;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// The caps of the output extent from the horizons over the whole input extent.
+bool vtkAperturePrecompute::vtkRun::SweepHorizons(const int extent[6])
+{
+  vtkAperturePrecompute* self = this->Self;
+  Receiver& r = *this->Receivers[0];
+  auto* image = vtkImageData::SafeDownCast(r.Input);
+  auto* output = vtkImageData::SafeDownCast(r.Output);
+  CopyExtent(image, extent, output);
+  vtkHorizonHeightField::Settings settings;
+  settings.HeightScale = self->HeightScale;
+  settings.Sectors = self->NumberOfSectors;
+  settings.MaximumDistance = self->MaximumDistance;
+  settings.AmbientOcclusion = self->ComputeAmbientOcclusion;
+  settings.BentNormalName = self->BentNormalArrayName.c_str();
+  settings.RadiusName = self->ApertureRadiusArrayName.c_str();
+  settings.OcclusionName = self->AmbientOcclusionArrayName.c_str();
+  self->UpdateProgress(0.0);
+  auto progress = [self](double fraction)
+  {
+    self->UpdateProgress(fraction);
+    return !self->GetAbortExecute();
+  };
+  std::string error;
+  this->NoData = vtkHorizonHeightField::Compute(
+    image, r.Heights, extent, settings, output->GetPointData(), error, progress);
+  if (this->NoData < 0)
+  {
+    this->Aborted = self->GetAbortExecute() != 0;
+    if (!this->Aborted)
+    {
+      vtkErrorWithObjectMacro(self, "Cannot sweep the horizons: " << error);
+    }
+    return this->Aborted;
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -466,7 +541,7 @@ bool vtkAperturePrecompute::vtkRun::Cast()
 
 //------------------------------------------------------------------------------
 // Each receiver's output: its input (split at creases, or refined) with the caps per point.
-void vtkAperturePrecompute::vtkRun::WriteOutputs()
+void vtkAperturePrecompute::vtkRun::WriteOutputs(const int* extent)
 {
   vtkAperturePrecompute* self = this->Self;
   const float openRadius = static_cast<float>(0.5 * Pi), closedRadius = 0.0f;
@@ -505,12 +580,27 @@ void vtkAperturePrecompute::vtkRun::WriteOutputs()
       pd->SetNormals(vtkApertureSurface::Scatter("Normals", 3, normals,
         normals + 3 * r->Surface.GetNumberOfPoints(), points, noNormal, noNormal));
     }
+    // A tile: the input's halo cast rays, the output is the tile.
+    auto* image = vtkImageData::SafeDownCast(r->Output);
+    if (image && extent && !std::equal(extent, extent + 6, image->GetExtent()))
+    {
+      vtkNew<vtkImageData> whole;
+      whole->ShallowCopy(image);
+      CopyExtent(whole, extent, image);
+    }
   }
 }
 
 //------------------------------------------------------------------------------
 void vtkAperturePrecompute::vtkRun::Warn()
 {
+  if (this->NoData > 0)
+  {
+    vtkWarningWithObjectMacro(this->Self, << this->NoData
+                                          << " texel(s) are no-data (not finite, or masked); "
+                                             "they neither occlude nor receive (vtkValidPointMask "
+                                             "0, closed aperture).");
+  }
   vtkIdType nonFinite = 0, undefinedNormals = 0, flipped = 0;
   for (const auto& r : this->Receivers)
   {
@@ -587,32 +677,78 @@ int vtkAperturePrecompute::FillInputPortInformation(int port, vtkInformation* in
 }
 
 //------------------------------------------------------------------------------
+int vtkAperturePrecompute::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  if (!inInfo || !outInfo->Has(SDDP::UPDATE_EXTENT()) || !inInfo->Has(SDDP::WHOLE_EXTENT()) ||
+    !inInfo->Has(vtkDataObject::SPACING()))
+  {
+    return 1; // not a grid: the executive passes the request on
+  }
+  int extent[6], whole[6];
+  outInfo->Get(SDDP::UPDATE_EXTENT(), extent);
+  inInfo->Get(SDDP::WHOLE_EXTENT(), whole);
+  const int halo =
+    vtkHorizonHeightField::Halo(this->MaximumDistance, inInfo->Get(vtkDataObject::SPACING()));
+  for (int k = 0; k < 6; ++k)
+  {
+    const bool grows = k < 4 && halo >= 0;
+    const int grown =
+      k % 2 ? std::min(whole[k], extent[k] + halo) : std::max(whole[k], extent[k] - halo);
+    extent[k] = grows ? grown : whole[k];
+  }
+  inInfo->Set(SDDP::UPDATE_EXTENT(), extent, 6);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
 int vtkAperturePrecompute::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
   vtkDataObject* output = vtkDataObject::GetData(outputVector, 0);
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  const int* extent = vtkImageData::SafeDownCast(output) &&
+      outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT())
+    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT())
+    : nullptr;
   this->NumberOfSurfacePoints = 0;
+  this->UsedHorizons = false;
   if (!input || !output)
   {
     vtkErrorMacro("Missing input or output.");
     return 0;
   }
-  // 1. Receivers and occluders, checked before any work.
+  // 1. Receivers and occluders, checked before any work; horizons or rays.
   vtkRun run(this);
   bool ok = run.CollectReceivers(input, output) && run.CheckReceivers();
   run.CollectOccluders(inputVector[1]);
-  // 2. Their surfaces (refined, welded, split at creases) and one Embree scene.
-  ok = ok && run.Refine() && run.BuildSurfaces() && run.BuildScene();
-  // 3. The rays of every receiving point.
-  ok = ok && run.Cast();
+  ok = ok && run.ChooseMethod();
+  this->UsedHorizons = ok && run.Horizons;
+  if (ok && run.Horizons)
+  {
+    // 2. The height field's horizons, straight to the output extent's caps.
+    ok = run.SweepHorizons(extent ? extent : vtkImageData::SafeDownCast(input)->GetExtent());
+  }
+  else if (ok)
+  {
+    // 2. The surfaces (refined, welded, split at creases), one Embree scene, and the rays of
+    // every receiving point; the caps on the output's points.
+    ok = run.Refine() && run.BuildSurfaces() && run.BuildScene() && run.Cast();
+    if (ok && !run.Aborted)
+    {
+      run.WriteOutputs(extent);
+    }
+  }
   if (!ok || run.Aborted)
   {
     output->Initialize();
     return ok ? 1 : 0;
   }
-  // 4. The caps on the output's points.
-  run.WriteOutputs();
+  // 3. What the caps could not be computed for.
   run.Warn();
   return 1;
 }
@@ -635,6 +771,10 @@ void vtkAperturePrecompute::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ApertureRadiusArrayName: " << this->ApertureRadiusArrayName << "\n";
   os << indent << "AmbientOcclusionArrayName: " << this->AmbientOcclusionArrayName << "\n";
   os << indent << "AccelerationStructure: " << structures[this->AccelerationStructure] << "\n";
+  static const char* const methods[] = { "HorizonsForHeightFields", "Rays", "Horizons" };
+  os << indent << "Method: " << methods[this->Method] << "\n";
+  os << indent << "NumberOfSectors: " << this->NumberOfSectors << "\n";
+  os << indent << "UsedHorizons: " << this->UsedHorizons << "\n";
   os << indent << "EmbreeConfiguration: " << this->EmbreeConfiguration << "\n";
   os << indent << "NumberOfOccluders: " << this->GetNumberOfInputConnections(1) << "\n";
   os << indent << "NumberOfSurfacePoints: " << this->NumberOfSurfacePoints << "\n";

@@ -30,7 +30,10 @@
  *   array to process) are heights. Grid point (i, j) sits at the image's physical position of
  *   (i, j, 0) raised by HeightScale × height along the grid's third axis; the surface is
  *   triangulated as (i,j)(i+1,j)(i+1,j+1) and (i,j)(i+1,j+1)(i,j+1). The output is the same grid
- *   with one cap per grid point, ready to be used as a texture;
+ *   with one cap per grid point, ready to be used as a texture. By default its visibility comes
+ *   from horizon sweeps, not rays (see SetMethod()), and the filter streams: an update extent
+ *   smaller than the grid is computed from that extent grown by MaximumDistance, so that a
+ *   large DEM goes through in tiles whose results equal the whole grid's;
  * - a composite dataset of vtkPolyData: every leaf occludes every other and each leaf gets its
  *   arrays.
  *
@@ -224,9 +227,48 @@ public:
   vtkGetCharFromStdStringMacro(EmbreeConfiguration);
   ///@}
 
+  enum Methods
+  {
+    HORIZONS_FOR_HEIGHT_FIELDS = 0,
+    RAYS = 1,
+    HORIZONS = 2
+  };
+
+  ///@{
+  /**
+   * How visibility is found. HORIZONS_FOR_HEIGHT_FIELDS (default): horizon sweeps for a height
+   * field without occluders, rays otherwise. RAYS: NumberOfRays Embree rays per point. HORIZONS:
+   * horizon sweeps, for height fields only (anything else, or occluders, is an error): the
+   * horizon of every texel in NumberOfSectors azimuth sectors, found along lines across the
+   * grid in time linear in texels × sectors, then per sector the exact visible solid angle
+   * above it (see vtkHorizonApertures). Texels that are not finite, or 0 in a
+   * `vtkValidPointMask` point array, are no-data: they neither occlude nor receive, and get a
+   * closed aperture and a 0 in the output's `vtkValidPointMask`.
+   */
+  vtkSetClampMacro(Method, int, HORIZONS_FOR_HEIGHT_FIELDS, HORIZONS);
+  vtkGetMacro(Method, int);
+  void SetMethodToHorizonsForHeightFields() { this->SetMethod(HORIZONS_FOR_HEIGHT_FIELDS); }
+  void SetMethodToRays() { this->SetMethod(RAYS); }
+  void SetMethodToHorizons() { this->SetMethod(HORIZONS); }
+  ///@}
+
+  ///@{
+  /**
+   * Azimuth sectors of the horizon sweeps, in [4, 1024]. Default 32.
+   */
+  vtkSetClampMacro(NumberOfSectors, int, 4, 1024);
+  vtkGetMacro(NumberOfSectors, int);
+  ///@}
+
+  /**
+   * Whether the last update swept horizons (or cast rays).
+   */
+  vtkGetMacro(UsedHorizons, bool);
+
   /**
    * The surface points that cast rays in the last update, NumberOfRays each: one per position
-   * and side of a crease (points welded together cast once), or per texel.
+   * and side of a crease (points welded together cast once), or per texel; 0 after horizon
+   * sweeps.
    */
   vtkGetMacro(NumberOfSurfacePoints, vtkIdType);
 
@@ -235,6 +277,9 @@ protected:
   ~vtkAperturePrecompute() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  // A height field's tile needs MaximumDistance of grid around it.
+  int RequestUpdateExtent(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
@@ -248,6 +293,9 @@ protected:
   double FeatureAngle = 60.0;
   double MaximumEdgeLength = 0.0;
   int AccelerationStructure = AUTOMATIC;
+  int Method = HORIZONS_FOR_HEIGHT_FIELDS;
+  int NumberOfSectors = 32;
+  bool UsedHorizons = false;
   vtkIdType NumberOfSurfacePoints = 0;
   std::string BentNormalArrayName = "BentNormal";
   std::string ApertureRadiusArrayName = "ApertureRadius";

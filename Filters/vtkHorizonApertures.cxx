@@ -10,6 +10,8 @@
 =========================================================================*/
 #include "vtkHorizonApertures.h"
 
+#include "vtkSphericalCap.h"
+
 #include "vtkMath.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
@@ -89,30 +91,45 @@ bool CheckGrid(const vtkHorizonApertures::Grid& grid, Field& field, std::string&
   return true;
 }
 
-// ∂z/∂(axis) at texel t, index `at` of `n` along the axis: central, one-sided at an edge or
-// next to no-data, 0 without a valid neighbour.
-double Derivative(
-  const Field& f, vtkIdType t, vtkIdType at, vtkIdType n, vtkIdType stride, int axis)
+// The normal at texel (i, j) of the triangulated surface that vtkAperturePrecompute's rays see
+// (cells split as (i,j)(i+1,j)(i+1,j+1) and (i,j)(i+1,j+1)(i,j+1)): the normalised sum of the
+// unit normals of its up to six triangles whose corners are all valid; +z without any.
+void TexelNormal(const Field& f, vtkIdType i, vtkIdType j, double n[3])
 {
-  const bool previous = at > 0 && f.IsValid(t - stride);
-  const bool next = at + 1 < n && f.IsValid(t + stride);
-  const float* z = f.Heights;
-  if (previous && next)
+  // Its neighbours around it, counter-clockwise seen from above; triangles are (k, k + 1).
+  static const int ring[7][2] = { { 1, 0 }, { 1, 1 }, { 0, 1 }, { -1, 0 }, { -1, -1 }, { 0, -1 },
+    { 1, 0 } };
+  const vtkIdType t = i + j * f.Nx;
+  double offsets[7][3];
+  bool there[7];
+  for (int k = 0; k < 7; ++k)
   {
-    return (z[t + stride] - double(z[t - stride])) / (2.0 * f.Spacing[axis]);
+    const vtkIdType a = i + ring[k][0], b = j + ring[k][1], u = a + b * f.Nx;
+    there[k] = a >= 0 && a < f.Nx && b >= 0 && b < f.Ny && f.IsValid(u);
+    offsets[k][0] = ring[k][0] * f.Spacing[0];
+    offsets[k][1] = ring[k][1] * f.Spacing[1];
+    offsets[k][2] = there[k] ? double(f.Heights[u]) - f.Heights[t] : 0.0;
   }
-  if (previous || next)
+  n[0] = n[1] = n[2] = 0.0;
+  for (int k = 0; k < 6; ++k)
   {
-    return (z[next ? t + stride : t] - double(z[next ? t : t - stride])) / f.Spacing[axis];
+    double m[3];
+    vtkMath::Cross(offsets[k], offsets[k + 1], m);
+    if (there[k] && there[k + 1] && vtkMath::Normalize(m) > 0.0)
+    {
+      vtkMath::Add(n, m, n);
+    }
   }
-  return 0.0;
+  if (vtkMath::Normalize(n) == 0.0)
+  {
+    n[0] = n[1] = 0.0;
+    n[2] = 1.0;
+  }
 }
 
 // Normals and valid flags of the output extent; (0, 0, 1) for no-data texels.
-void ComputeNormals(const Field& f, std::vector<float>& normals, std::vector<unsigned char>& valid)
+void ComputeNormals(const Field& f, float* normals, unsigned char* valid)
 {
-  normals.resize(3 * f.OutNx * f.OutNy);
-  valid.resize(f.OutNx * f.OutNy);
   vtkSMPTools::For(0, f.OutNy,
     [&](vtkIdType first, vtkIdType last)
     {
@@ -126,9 +143,7 @@ void ComputeNormals(const Field& f, std::vector<float>& normals, std::vector<uns
           double n[3] = { 0.0, 0.0, 1.0 };
           if (valid[o])
           {
-            n[0] = -Derivative(f, t, i, f.Nx, 1, 0);
-            n[1] = -Derivative(f, t, j, f.Ny, f.Nx, 1);
-            vtkMath::Normalize(n);
+            TexelNormal(f, i, j, n);
           }
           std::copy(n, n + 3, &normals[3 * o]);
         }
@@ -485,8 +500,7 @@ void LineSweep::Undo(vtkIdType k)
 class Group
 {
 public:
-  Group(const Field& f, const Lines& lines, const std::vector<float>& normals, vtkIdType first,
-    vtkIdType last);
+  Group(const Field& f, const Lines& lines, const float* normals, vtkIdType first, vtkIdType last);
 
   vtkIdType GetLength() const { return this->Length; }
   vtkIdType GetNumberOfLines() const { return this->Last - this->First; }
@@ -505,12 +519,12 @@ private:
 
   const Field& F;
   const Lines& L;
-  const std::vector<float>& Normals;
+  const float* Normals;
   vtkIdType First, Last, Low = 0, High = -1, Length = 0;
 };
 
-Group::Group(const Field& f, const Lines& lines, const std::vector<float>& normals, vtkIdType first,
-  vtkIdType last)
+Group::Group(
+  const Field& f, const Lines& lines, const float* normals, vtkIdType first, vtkIdType last)
   : F(f)
   , L(lines)
   , Normals(normals)
@@ -606,8 +620,7 @@ void Group::Scatter(const Scratch& s, const Sink& sink) const
 
 // Sweeps all lines of a sector (or pair), groups in parallel.
 template <typename Sink>
-void SweepSector(
-  const Field& f, const Lines& lines, const std::vector<float>& normals, const Sink& sink)
+void SweepSector(const Field& f, const Lines& lines, const float* normals, const Sink& sink)
 {
   const vtkIdType groups = (lines.LastLine - lines.FirstLine + LinesPerGroup) / LinesPerGroup;
   vtkSMPThreadLocal<Scratch> scratch;
@@ -644,7 +657,7 @@ void SweepSector(
 class Accumulator
 {
 public:
-  Accumulator(const Lines& lines, vtkHorizonApertures::Apertures& out)
+  Accumulator(const Lines& lines, const vtkHorizonApertures::Buffers& out)
     : L(lines)
     , Out(out)
   {
@@ -671,13 +684,13 @@ public:
 
 private:
   const Lines& L;
-  vtkHorizonApertures::Apertures& Out;
+  const vtkHorizonApertures::Buffers& Out;
 };
 
 // The open hemisphere less the deficits: radius, bent normal, ambient occlusion.
-void Finish(vtkHorizonApertures::Apertures& out)
+void Finish(const vtkHorizonApertures::Buffers& out, vtkIdType texels)
 {
-  vtkSMPTools::For(0, out.Nx * out.Ny,
+  vtkSMPTools::For(0, texels,
     [&](vtkIdType first, vtkIdType last)
     {
       for (vtkIdType o = first; o < last; ++o)
@@ -686,16 +699,22 @@ void Finish(vtkHorizonApertures::Apertures& out)
         const float* n = &out.Normals[3 * o];
         if (!out.Valid[o])
         {
-          out.ApertureRadius[o] = out.AmbientOcclusion[o] = 0.0f;
+          out.ApertureRadius[o] = 0.0f;
+          if (out.AmbientOcclusion)
+          {
+            out.AmbientOcclusion[o] = 0.0f;
+          }
           std::copy(n, n + 3, bent);
           continue;
         }
         const double solid = 2.0 * Pi - out.ApertureRadius[o];
         double sum[3] = { -bent[0], -bent[1], Pi - bent[2] };
-        out.ApertureRadius[o] =
-          static_cast<float>(std::acos(vtkMath::ClampValue(1.0 - solid / (2.0 * Pi), -1.0, 1.0)));
-        const double ao = (n[0] * sum[0] + n[1] * sum[1] + n[2] * sum[2]) / Pi;
-        out.AmbientOcclusion[o] = static_cast<float>(vtkMath::ClampValue(ao, 0.0, 1.0));
+        out.ApertureRadius[o] = static_cast<float>(vtkSphericalCap::CapRadiusFromSolidAngle(solid));
+        if (out.AmbientOcclusion)
+        {
+          const double ao = (n[0] * sum[0] + n[1] * sum[1] + n[2] * sum[2]) / Pi;
+          out.AmbientOcclusion[o] = static_cast<float>(vtkMath::ClampValue(ao, 0.0, 1.0));
+        }
         if (vtkMath::Normalize(sum) == 0.0)
         {
           std::copy(n, n + 3, sum);
@@ -707,7 +726,21 @@ void Finish(vtkHorizonApertures::Apertures& out)
 }
 
 //------------------------------------------------------------------------------
-bool vtkHorizonApertures::Compute(const Grid& grid, Apertures& output, std::string& error,
+bool vtkHorizonApertures::GetOutputSize(
+  const Grid& grid, vtkIdType& nx, vtkIdType& ny, std::string& error)
+{
+  Field f;
+  if (!CheckGrid(grid, f, error))
+  {
+    return false;
+  }
+  nx = f.OutNx;
+  ny = f.OutNy;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHorizonApertures::Compute(const Grid& grid, const Buffers& output, std::string& error,
   const std::function<bool(double fraction)>& progress)
 {
   Field f;
@@ -715,12 +748,11 @@ bool vtkHorizonApertures::Compute(const Grid& grid, Apertures& output, std::stri
   {
     return false;
   }
-  output.Nx = f.OutNx;
-  output.Ny = f.OutNy;
+  const vtkIdType texels = f.OutNx * f.OutNy;
   ComputeNormals(f, output.Normals, output.Valid);
-  output.BentNormals.assign(3 * f.OutNx * f.OutNy, 0.0f);
-  output.ApertureRadius.assign(f.OutNx * f.OutNy, 0.0f);
-  output.AmbientOcclusion.assign(f.OutNx * f.OutNy, 0.0f);
+  std::fill_n(output.BentNormals, 3 * texels, 0.0f);
+  std::fill_n(output.ApertureRadius, texels, 0.0f);
+
   // Opposite sectors share their lines: one pass gathers and scatters both.
   const bool paired = grid.Sectors % 2 == 0;
   const int passes = paired ? grid.Sectors / 2 : grid.Sectors;
@@ -730,12 +762,36 @@ bool vtkHorizonApertures::Compute(const Grid& grid, Apertures& output, std::stri
     SweepSector(f, lines, output.Normals, Accumulator(lines, output));
     if (progress && !progress(double(pass + 1) / passes))
     {
-      output = Apertures();
       error = "The computation was aborted.";
       return false;
     }
   }
-  Finish(output);
+  Finish(output, texels);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHorizonApertures::Compute(const Grid& grid, Apertures& output, std::string& error,
+  const std::function<bool(double fraction)>& progress)
+{
+  output = Apertures();
+  if (!GetOutputSize(grid, output.Nx, output.Ny, error))
+  {
+    return false;
+  }
+  const vtkIdType texels = output.Nx * output.Ny;
+  output.BentNormals.resize(3 * texels);
+  output.ApertureRadius.resize(texels);
+  output.AmbientOcclusion.resize(texels);
+  output.Normals.resize(3 * texels);
+  output.Valid.resize(texels);
+  const Buffers buffers{ output.BentNormals.data(), output.ApertureRadius.data(),
+    output.AmbientOcclusion.data(), output.Normals.data(), output.Valid.data() };
+  if (!Compute(grid, buffers, error, progress))
+  {
+    output = Apertures();
+    return false;
+  }
   return true;
 }
 
@@ -753,12 +809,12 @@ bool vtkHorizonApertures::ComputeHorizons(
     error = "The sector is not one of the grid's.";
     return false;
   }
-  std::vector<float> normals;
-  std::vector<unsigned char> valid;
-  ComputeNormals(f, normals, valid);
+  std::vector<float> normals(3 * f.OutNx * f.OutNy);
+  std::vector<unsigned char> valid(f.OutNx * f.OutNy);
+  ComputeNormals(f, normals.data(), valid.data());
   horizons.assign(f.OutNx * f.OutNy, std::numeric_limits<float>::quiet_NaN());
   float* h = horizons.data();
-  SweepSector(f, Lines(f, grid, sector, false), normals,
+  SweepSector(f, Lines(f, grid, sector, false), normals.data(),
     [h](vtkIdType o, const double slopes[2]) { h[o] = static_cast<float>(std::atan(slopes[0])); });
   return true;
 }

@@ -58,9 +58,13 @@
  * on threads. Per-texel sums live in the output arrays until the last pass (33 bytes per
  * output texel in all, besides the input and the threads' buffers of a group of lines).
  *
- * Normals are central differences of the heights (one-sided at the edges and next to no-data):
- * n = normalize(−∂z/∂x, −∂z/∂y, 1). No-data texels (Valid 0, or a height that is not finite)
- * neither occlude nor receive. Earth curvature is ignored.
+ * Normals are those of the triangulated surface vtkAperturePrecompute's rays see (cells split
+ * as (i,j)(i+1,j)(i+1,j+1) and (i,j)(i+1,j+1)(i,j+1)): the normalised sum of the unit normals of
+ * a texel's up to six triangles with valid corners, so that both methods measure the same
+ * hemisphere (central differences differ from them by 1.7° on the Fuji tile; with them the
+ * visible fraction was 0.0103 RMS from 4096 rays per texel, with these 0.0088). No-data texels
+ * (Valid 0, or a height that is not finite) neither occlude nor receive. Earth curvature is
+ * ignored.
  */
 
 #ifndef vtkHorizonApertures_h
@@ -102,7 +106,17 @@ public:
     vtkIdType Origin[2] = { 0, 0 };
   };
 
-  /// Per texel of the output extent, i fastest.
+  /// The caller's arrays for the output extent (i fastest): 3, 1, 1, 3 and 1 values per texel.
+  struct Buffers
+  {
+    float* BentNormals;      ///< unit; the normal where not valid
+    float* ApertureRadius;   ///< radians; 0 where not valid
+    float* AmbientOcclusion; ///< 1 on an open plane; 0 where not valid; may be null
+    float* Normals;          ///< (0, 0, 1) where not valid
+    unsigned char* Valid;    ///< 0 for no-data texels
+  };
+
+  /// Per texel of the output extent, i fastest, in arrays of its own.
   struct Apertures
   {
     vtkIdType Nx = 0;
@@ -115,13 +129,22 @@ public:
   };
 
   /**
-   * Computes the apertures of the grid's output extent. `progress` is called after each pass
+   * Computes the apertures of the grid's output extent into the caller's buffers (sized by
+   * GetOutputSize()), or into arrays of the output's own. `progress` is called after each pass
    * (a sector, or with an even number of sectors a sector and its opposite) with the fraction
-   * done; when it returns false, Compute() stops, clears `output` and fails. Returns false with
-   * one sentence in `error` for unusable input or an abort.
+   * done; when it returns false, Compute() stops and fails (owned arrays are cleared). Returns
+   * false with one sentence in `error` for unusable input or an abort.
    */
+  static bool Compute(const Grid& grid, const Buffers& output, std::string& error,
+    const std::function<bool(double fraction)>& progress = nullptr);
   static bool Compute(const Grid& grid, Apertures& output, std::string& error,
     const std::function<bool(double fraction)>& progress = nullptr);
+
+  /**
+   * The size of the grid's output extent (what Buffers must hold); false with one sentence in
+   * `error` for unusable input.
+   */
+  static bool GetOutputSize(const Grid& grid, vtkIdType& nx, vtkIdType& ny, std::string& error);
 
   /**
    * The horizon h of one sector (0 … Sectors − 1) per texel of the output extent, as Compute()
