@@ -7,7 +7,7 @@ set -euo pipefail
 packages=(
   cmake make g++ pkg-config clang-format
   libvtk9-dev python3-vtk9 python3-numpy
-  libembree-dev libopenexr-dev libglm-dev libx11-dev
+  libembree-dev libopenexr-dev libglm-dev libx11-dev libgdal-dev gdal-bin
   xvfb xauth
 )
 if [ "${1:-}" = "fuzz" ]; then

@@ -1,0 +1,137 @@
+"""aperture-precompute end to end.
+
+    python3 TestAperturePrecompute.py <aperture-precompute> <Testing/Data> <work folder>
+
+A DEM as an ESRI ASCII grid (a format GDAL reads, written here from the Fuji tile, with a hole of
+no-data) becomes a GeoTIFF of apertures with the DEM's georeferencing, NaN at the no-data
+texels; tiles of any height give the same file contents as one piece; bad input ends with exit
+status 1 or 2 and one line on stderr. `gdalinfo` (Debian's gdal-bin) reads the results.
+"""
+
+import json
+import math
+import os
+import subprocess
+import sys
+
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOImage import vtkPNGReader
+
+EXE, DATA, WORK = sys.argv[1:4]
+os.makedirs(WORK, exist_ok=True)
+failures = []
+
+
+def check(ok, what):
+    print(("ok   " if ok else "FAIL ") + what)
+    if not ok:
+        failures.append(what)
+
+
+def path(name):
+    return os.path.join(WORK, name)
+
+
+def run(*args):
+    return subprocess.run([EXE, *args], capture_output=True, text=True, timeout=600)
+
+
+def gdalinfo(name, *flags):
+    out = subprocess.run(["gdalinfo", "-json", *flags, name], capture_output=True, text=True)
+    return json.loads(out.stdout) if out.returncode == 0 else None
+
+
+def fuji_heights(step):
+    reader = vtkPNGReader()
+    reader.SetFileName(os.path.join(DATA, "fuji-terrain-rgb.png"))
+    reader.Update()
+    w, h, _ = reader.GetOutput().GetDimensions()
+    rgb = vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars()).reshape(h, w, -1)
+    rgb = rgb[::-1, :, :3].astype(np.int64)  # the file's first row north
+    heights = (rgb[..., 0] * 65536 + rgb[..., 1] * 256 + rgb[..., 2] - 100000) / 10.0
+    return heights[::step, ::step]
+
+
+def write_ascii_grid(name, heights, cell, hole):
+    rows, cols = heights.shape
+    with open(name, "w") as f:
+        f.write(f"ncols {cols}\nnrows {rows}\nxllcorner 300000\nyllcorner 3900000\n"
+                f"cellsize {cell}\nNODATA_value -9999\n")
+        for r in range(rows):
+            values = ["-9999" if hole(r, c) else f"{heights[r, c]:.1f}" for c in range(cols)]
+            f.write(" ".join(values) + "\n")
+
+
+def hole(r, c):
+    return 40 <= r < 44 and 50 <= c < 56
+
+
+dem = path("fuji.asc")
+write_ascii_grid(dem, fuji_heights(4), 120.0, hole)
+
+# One piece: the whole DEM.
+out = path("apertures.tif")
+result = run(dem, "-o", out, "--sectors", "16", "--quiet")
+check(result.returncode == 0 and result.stderr == "", "whole DEM: exit 0, nothing on stderr")
+info = gdalinfo(out, "-stats")
+check(info is not None, "the output is a raster GDAL reads")
+if info:
+    names = [b.get("description") for b in info["bands"]]
+    check(names == ["BentNormal_X", "BentNormal_Y", "BentNormal_Z", "ApertureRadius",
+                    "AmbientOcclusion"], "bands named after the arrays: " + str(names))
+    check(info["geoTransform"] == [300000.0, 120.0, 0.0, 3900000.0 + 128 * 120.0, 0.0, -120.0],
+          "the DEM's geotransform: " + str(info["geoTransform"]))
+    radius = info["bands"][3]
+    check(0.0 <= radius["minimum"] and radius["maximum"] <= math.pi / 2 + 1e-6,
+          f"radii within [0, pi/2]: {radius['minimum']} .. {radius['maximum']}")
+    valid = float(radius["metadata"][""]["STATISTICS_VALID_PERCENT"])
+    check(abs(valid - 100 * (1 - 24 / 128 ** 2)) < 0.006,  # gdalinfo prints 2 decimals
+          f"exactly the 24 no-data texels are NaN (no-data): {valid}% valid")
+
+# Tiles of 5 and of 37 rows with a search radius: the same contents as one piece with it.
+sums = []
+for rows in ("5", "37", "100000"):
+    name = path(f"tiled-{rows}.tif")
+    result = run(dem, "-o", name, "--sectors", "16", "--max-distance", "1500", "--tile-rows",
+                 rows, "--quiet")
+    check(result.returncode == 0, f"--max-distance 1500 --tile-rows {rows}: exit 0")
+    tiled = gdalinfo(name, "-checksum")
+    sums.append([b.get("checksum") for b in tiled["bands"]] if tiled else None)
+check(sums[0] is not None and sums[0] == sums[1] == sums[2],
+      "tiles of 5, 37 rows and one piece: identical bands " + str(sums))
+
+# Progress and summary on a normal run.
+result = run(dem, "-o", path("summary.tif"), "--sectors", "8")
+check(result.returncode == 0 and "128 x 128 texels" in result.stdout and "spacing 120" in
+      result.stdout, "summary: " + result.stdout.strip())
+
+# Bad input: exit 1 (data) or 2 (command line), one line on stderr.
+truncated = path("truncated.tif")
+with open(out, "rb") as f, open(truncated, "wb") as g:
+    g.write(f.read()[:3000])
+cases = [
+    ([path("missing.tif"), "-o", path("x.tif")], 1),
+    ([truncated, "-o", path("x.tif")], 1),
+    ([out, "-o", path("x.tif")], 1),  # five bands: not a DEM
+    ([dem, "-o", path("no-such-folder/x.tif")], 1),
+    ([dem], 2),
+    ([dem, "-o", path("x.tif"), "--sectors", "2"], 2),
+    ([dem, "-o", path("x.tif"), "--max-distance", "-5"], 2),
+    ([dem, "-o", path("x.tif"), "--sectors"], 2),
+    ([dem, "-o", path("x.tif"), "--frobnicate"], 2),
+    ([dem, dem, "-o", path("x.tif")], 2),
+]
+for args, status in cases:
+    result = run(*args)
+    lines = result.stderr.strip().splitlines()
+    check(result.returncode == status and len(lines) == 1,
+          f"{' '.join(os.path.basename(a) for a in args)}: exit {result.returncode} "
+          f"(want {status}), stderr {lines}")
+check(not os.path.exists(path("x.tif")), "no output left behind by a failed run")
+
+result = run("--help")
+check(result.returncode == 0 and "usage: aperture-precompute" in result.stdout, "--help")
+
+print(f"{len(failures)} failed" if failures else "all passed")
+sys.exit(1 if failures else 0)

@@ -1,0 +1,383 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    vtkGDALDEMReader.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkGDALDEMReader.h"
+
+#include "vtkGDALSession.h"
+#include "vtkHorizonHeightField.h"
+
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkSMPTools.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkStringArray.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <gdal.h>
+#include <ogr_srs_api.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+vtkStandardNewMacro(vtkGDALDEMReader);
+
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+constexpr double DegreesToRadians = Pi / 180.0;
+
+// Metres per degree of longitude and of latitude at latitude phi (degrees) on an ellipsoid.
+void MetresPerDegree(double semiMajor, double inverseFlattening, double phi, double metres[2])
+{
+  const double f = inverseFlattening > 0.0 ? 1.0 / inverseFlattening : 0.0;
+  const double e2 = f * (2.0 - f);
+  const double s = std::sin(phi * DegreesToRadians);
+  const double w = 1.0 - e2 * s * s;
+  metres[0] = DegreesToRadians * semiMajor / std::sqrt(w) * std::cos(phi * DegreesToRadians);
+  metres[1] = DegreesToRadians * semiMajor * (1.0 - e2) / (w * std::sqrt(w));
+}
+
+vtkNew<vtkDoubleArray> Pair(const char* name, const double values[2])
+{
+  vtkNew<vtkDoubleArray> array;
+  array->SetName(name);
+  array->SetNumberOfComponents(2);
+  array->InsertNextTuple(values);
+  return array;
+}
+
+vtkNew<vtkStringArray> Text(const char* name, const std::string& value)
+{
+  vtkNew<vtkStringArray> array;
+  array->SetName(name);
+  array->InsertNextValue(value);
+  return array;
+}
+}
+
+//------------------------------------------------------------------------------
+// The open file and its band, closed on destruction.
+class vtkGDALDEMReader::vtkRaster
+{
+public:
+  vtkRaster(const std::string& name, std::string& error)
+  {
+    this->Dataset =
+      GDALOpenEx(name.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr);
+    if (!this->Dataset)
+    {
+      error = "cannot open \"" + name + "\" as a raster: " + this->Session.LastError();
+      return;
+    }
+    const int bands = GDALGetRasterCount(this->Dataset);
+    if (bands != 1)
+    {
+      error = "\"" + name + "\" has " + std::to_string(bands) + " bands; a DEM has one";
+      return;
+    }
+    this->Band = GDALGetRasterBand(this->Dataset, 1);
+    if (GDALDataTypeIsComplex(GDALGetRasterDataType(this->Band)))
+    {
+      error = "\"" + name + "\" holds complex numbers, not heights";
+      this->Band = nullptr;
+    }
+  }
+  ~vtkRaster()
+  {
+    if (this->Dataset)
+    {
+      GDALClose(this->Dataset);
+    }
+  }
+  vtkRaster(const vtkRaster&) = delete;
+  vtkRaster& operator=(const vtkRaster&) = delete;
+
+  vtkGDALSession Session;
+  GDALDatasetH Dataset = nullptr;
+  GDALRasterBandH Band = nullptr;
+};
+
+//------------------------------------------------------------------------------
+vtkGDALDEMReader::vtkGDALDEMReader()
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+//------------------------------------------------------------------------------
+bool vtkGDALDEMReader::CanReadFile(const char* fileName)
+{
+  vtkGDALSession session;
+  GDALDatasetH dataset = fileName
+    ? GDALOpenEx(fileName, GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr)
+    : nullptr;
+  if (dataset)
+  {
+    GDALClose(dataset);
+  }
+  return dataset != nullptr;
+}
+
+//------------------------------------------------------------------------------
+int vtkGDALDEMReader::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  std::string error;
+  vtkRaster raster(this->FileName, error);
+  if (!raster.Band)
+  {
+    vtkErrorMacro(<< (error.empty() ? "Cannot read the DEM." : error));
+    return 0;
+  }
+  this->Size[0] = GDALGetRasterXSize(raster.Dataset);
+  this->Size[1] = GDALGetRasterYSize(raster.Dataset);
+  if (this->Size[0] < 1 || this->Size[1] < 1)
+  {
+    vtkErrorMacro("\"" << this->FileName << "\" has no texels.");
+    return 0;
+  }
+
+  // Geotransform: x = gt0 + column gt1 + row gt2, y = gt3 + column gt4 + row gt5.
+  double gt[6] = { 0.0, 1.0, 0.0, 0.0, 0.0, -1.0 };
+  const bool georeferenced = GDALGetGeoTransform(raster.Dataset, gt) == CE_None;
+  if (gt[2] != 0.0 || gt[4] != 0.0 || !(gt[1] > 0.0) || gt[5] == 0.0)
+  {
+    vtkErrorMacro("\"" << this->FileName
+                       << "\" has a rotated, sheared or mirrored geotransform; warp it north-up "
+                          "first (gdalwarp).");
+    return 0;
+  }
+  const double nx = this->Size[0], ny = this->Size[1];
+  this->GeoSpacing[0] = gt[1];
+  this->GeoSpacing[1] = std::abs(gt[5]);
+  this->GeoOrigin[0] = gt[0] + 0.5 * gt[1];
+  this->GeoOrigin[1] = gt[5] < 0.0 ? gt[3] + (ny - 0.5) * gt[5] : gt[3] + 0.5 * gt[5];
+  const char* wkt = GDALGetProjectionRef(raster.Dataset);
+  this->SpatialReference = wkt ? wkt : "";
+  if (!this->FindGroundSpacing(georeferenced, gt, error))
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
+
+  vtkInformation* info = outputVector->GetInformationObject(0);
+  const int extent[6] = { 0, this->Size[0] - 1, 0, this->Size[1] - 1, 0, 0 };
+  const double spacing[3] = { this->Spacing[0], this->Spacing[1], 1.0 };
+  const double origin[3] = { this->Origin[0], this->Origin[1], 0.0 };
+  info->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  info->Set(vtkDataObject::SPACING(), spacing, 3);
+  info->Set(vtkDataObject::ORIGIN(), origin, 3);
+  info->Set(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT(), 1);
+  vtkDataObject::SetPointDataActiveScalarInfo(info, VTK_FLOAT, 1);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkGDALDEMReader::FindGroundSpacing(bool georeferenced, const double gt[6], std::string& error)
+{
+  OGRSpatialReferenceH srs = this->SpatialReference.empty()
+    ? nullptr
+    : OSRNewSpatialReference(this->SpatialReference.c_str());
+  this->Geographic = srs && OSRIsGeographic(srs);
+  std::ostringstream note;
+  if (this->Geographic)
+  {
+    const double north = std::max(gt[3], gt[3] + this->Size[1] * gt[5]);
+    const double south = std::min(gt[3], gt[3] + this->Size[1] * gt[5]);
+    const double centre = 0.5 * (north + south);
+    OGRErr err = OGRERR_NONE;
+    const double a = OSRGetSemiMajor(srs, &err), inverseFlattening = OSRGetInvFlattening(srs, &err);
+    double metres[2], edge[2];
+    MetresPerDegree(a, inverseFlattening, centre, metres);
+    MetresPerDegree(a, inverseFlattening, std::abs(north) > std::abs(south) ? north : south, edge);
+    this->Spacing[0] = this->GeoSpacing[0] * metres[0];
+    this->Spacing[1] = this->GeoSpacing[1] * metres[1];
+    this->Origin[0] = this->Origin[1] = 0.0;
+    note << "metres at the tile's central latitude " << centre << " degrees (geographic CRS)";
+    if (!(std::max(std::abs(north), std::abs(south)) < 90.0 - 1e-9))
+    {
+      error = "\"" + this->FileName +
+        "\" reaches a pole, where degrees of longitude have no length; reproject it (gdalwarp)";
+    }
+    else if (edge[0] < 0.99 * metres[0])
+    {
+      vtkWarningMacro("\"" << this->FileName << "\" spans latitudes " << south << " to " << north
+                           << " degrees: its east-west spacing varies by "
+                           << 100.0 * (1.0 - edge[0] / metres[0])
+                           << "% across it; reproject it for exact slopes.");
+    }
+  }
+  else
+  {
+    const double unit = srs ? OSRGetLinearUnits(srs, nullptr) : 1.0;
+    for (int a = 0; a < 2; ++a)
+    {
+      this->Spacing[a] = this->GeoSpacing[a] * unit;
+      this->Origin[a] = this->GeoOrigin[a] * unit;
+    }
+    note << (srs ? "metres from the projected CRS's pixel size"
+                 : "pixel size of the file's geotransform (no CRS: taken as metres)");
+    if (!georeferenced)
+    {
+      note.str("no georeferencing: spacing 1");
+      vtkWarningMacro("\"" << this->FileName << "\" is not georeferenced: spacing 1.");
+    }
+  }
+  if (srs)
+  {
+    OSRDestroySpatialReference(srs);
+  }
+  for (const double s : this->Spacing)
+  {
+    if (error.empty() && !(s >= 1e-3 && s <= 1e6))
+    {
+      error = "\"" + this->FileName + "\" has a ground spacing of " + std::to_string(s) +
+        " m, outside [1 mm, 1000 km]";
+    }
+  }
+  this->GroundSpacingNote = note.str();
+  return error.empty();
+}
+
+//------------------------------------------------------------------------------
+int vtkGDALDEMReader::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkInformation* info = outputVector->GetInformationObject(0);
+  vtkImageData* output = vtkImageData::GetData(info);
+  int extent[6];
+  info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
+  output->SetExtent(extent);
+  output->SetSpacing(this->Spacing[0], this->Spacing[1], 1.0);
+  output->SetOrigin(this->Origin[0], this->Origin[1], 0.0);
+  const vtkIdType nx = extent[1] - extent[0] + 1, ny = extent[3] - extent[2] + 1;
+  if (nx < 1 || ny < 1)
+  {
+    return 1; // an empty piece
+  }
+  std::string error;
+  vtkRaster raster(this->FileName, error);
+  vtkNew<vtkFloatArray> heights;
+  heights->SetName("Elevation");
+  if (!raster.Band || !heights->Allocate(nx * ny))
+  {
+    vtkErrorMacro(<< (error.empty() ? "Cannot allocate " + std::to_string(nx * ny) + " texels."
+                                    : error));
+    output->Initialize();
+    return 0;
+  }
+  heights->SetNumberOfTuples(nx * ny);
+  if (!this->ReadRows(raster, extent, heights->GetPointer(0)))
+  {
+    output->Initialize();
+    return 0;
+  }
+  output->GetPointData()->SetScalars(heights);
+  this->MaskNoData(raster, output);
+  vtkFieldData* field = output->GetFieldData();
+  field->AddArray(Pair("GeoOrigin", this->GeoOrigin));
+  field->AddArray(Pair("GeoSpacing", this->GeoSpacing));
+  field->AddArray(Text("SpatialReference", this->SpatialReference));
+  field->AddArray(Text("GroundSpacing", this->GroundSpacingNote));
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+// The extent's rows, southern first, in blocks with progress between them.
+bool vtkGDALDEMReader::ReadRows(vtkRaster& raster, const int extent[6], float* heights)
+{
+  double gt[6] = { 0.0, 1.0, 0.0, 0.0, 0.0, -1.0 };
+  GDALGetGeoTransform(raster.Dataset, gt);
+  const bool northUp = gt[5] < 0.0;
+  const int nx = extent[1] - extent[0] + 1, ny = extent[3] - extent[2] + 1;
+  const int rowsPerBlock = std::max(1, (1 << 22) / nx);
+  this->UpdateProgress(0.0);
+  for (int first = 0; first < ny; first += rowsPerBlock)
+  {
+    const int rows = std::min(rowsPerBlock, ny - first);
+    // VTK rows first … first + rows - 1 of the extent; in the file, north-up files count down.
+    const int j = extent[2] + first;
+    const int fileRow = northUp ? this->Size[1] - 1 - (j + rows - 1) : j;
+    float* block = heights + static_cast<vtkIdType>(first) * nx;
+    if (GDALRasterIO(raster.Band, GF_Read, extent[0], fileRow, nx, rows, block, nx, rows,
+          GDT_Float32, 0, 0) != CE_None)
+    {
+      vtkErrorMacro("Cannot read \"" << this->FileName << "\": " << raster.Session.LastError());
+      return false;
+    }
+    if (northUp)
+    {
+      for (int r = 0; r < rows / 2; ++r)
+      {
+        std::swap_ranges(block + static_cast<vtkIdType>(r) * nx,
+          block + static_cast<vtkIdType>(r + 1) * nx,
+          block + static_cast<vtkIdType>(rows - 1 - r) * nx);
+      }
+    }
+    this->UpdateProgress(static_cast<double>(first + rows) / ny);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Scale and offset applied; no-data and non-finite texels NaN and masked.
+void vtkGDALDEMReader::MaskNoData(vtkRaster& raster, vtkImageData* output)
+{
+  int hasNoData = 0, hasScale = 0, hasOffset = 0;
+  const double noData = GDALGetRasterNoDataValue(raster.Band, &hasNoData);
+  const double scale = GDALGetRasterScale(raster.Band, &hasScale) * this->VerticalScale;
+  const double offset = GDALGetRasterOffset(raster.Band, &hasOffset) * this->VerticalScale;
+  const float marker = static_cast<float>(noData);
+  auto* heights = vtkFloatArray::SafeDownCast(output->GetPointData()->GetScalars());
+  float* z = heights->GetPointer(0);
+  const vtkIdType n = heights->GetNumberOfTuples();
+  vtkNew<vtkUnsignedCharArray> mask;
+  mask->SetName(vtkHorizonHeightField::ValidMaskName());
+  mask->SetNumberOfTuples(n);
+  unsigned char* valid = mask->GetPointer(0);
+  vtkSMPTools::For(0, n,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType t = first; t < last; ++t)
+      {
+        const double value = z[t] * scale + offset;
+        valid[t] = std::isfinite(value) && !(hasNoData && z[t] == marker);
+        z[t] = valid[t] ? static_cast<float>(value) : std::numeric_limits<float>::quiet_NaN();
+      }
+    });
+  if (std::find(valid, valid + n, 0) != valid + n)
+  {
+    output->GetPointData()->AddArray(mask);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkGDALDEMReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << this->FileName << "\n";
+  os << indent << "VerticalScale: " << this->VerticalScale << "\n";
+  os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
+  os << indent << "Spacing: " << this->Spacing[0] << ", " << this->Spacing[1] << "\n";
+  os << indent << "Origin: " << this->Origin[0] << ", " << this->Origin[1] << "\n";
+  os << indent << "GeoOrigin: " << this->GeoOrigin[0] << ", " << this->GeoOrigin[1] << "\n";
+  os << indent << "GeoSpacing: " << this->GeoSpacing[0] << ", " << this->GeoSpacing[1] << "\n";
+  os << indent << "Geographic: " << this->Geographic << "\n";
+  os << indent << "GroundSpacingNote: " << this->GroundSpacingNote << "\n";
+  os << indent << "SpatialReference: " << (this->SpatialReference.empty() ? "(none)" : "WKT")
+     << "\n";
+}
