@@ -52,6 +52,42 @@ void MetresPerDegree(double semiMajor, double inverseFlattening, double phi, dou
   metres[1] = DegreesToRadians * semiMajor * (1.0 - e2) / (w * std::sqrt(w));
 }
 
+// The ground distance, in metres, of one pixel along each axis at the tile's centre, for a
+// projected CRS with a geographic base; false where it cannot be found.
+bool GroundSpacing(
+  OGRSpatialReferenceH srs, const double gt[6], const int size[2], double ground[2])
+{
+  OGRSpatialReferenceH geographic = OSRCloneGeogCS(srs);
+  if (!geographic)
+  {
+    return false;
+  }
+  OSRSetAxisMappingStrategy(geographic, OAMS_TRADITIONAL_GIS_ORDER);
+  OSRSetAxisMappingStrategy(srs, OAMS_TRADITIONAL_GIS_ORDER);
+  OGRCoordinateTransformationH toGeographic = OCTNewCoordinateTransformation(srs, geographic);
+  const double cx = gt[0] + 0.5 * size[0] * gt[1], cy = gt[3] + 0.5 * size[1] * gt[5];
+  double x[3] = { cx, cx + gt[1], cx }, y[3] = { cy, cy, cy + gt[5] };
+  const bool ok = toGeographic && OCTTransform(toGeographic, 3, x, y, nullptr);
+  if (ok)
+  {
+    OGRErr err = OGRERR_NONE;
+    double metres[2];
+    MetresPerDegree(
+      OSRGetSemiMajor(geographic, &err), OSRGetInvFlattening(geographic, &err), y[0], metres);
+    for (int a = 0; a < 2; ++a)
+    {
+      const double east = (x[a + 1] - x[0]) * metres[0], north = (y[a + 1] - y[0]) * metres[1];
+      ground[a] = std::sqrt(east * east + north * north);
+    }
+  }
+  if (toGeographic)
+  {
+    OCTDestroyCoordinateTransformation(toGeographic);
+  }
+  OSRDestroySpatialReference(geographic);
+  return ok && ground[0] > 0.0 && ground[1] > 0.0;
+}
+
 vtkNew<vtkDoubleArray> Pair(const char* name, const double values[2])
 {
   vtkNew<vtkDoubleArray> array;
@@ -229,8 +265,20 @@ bool vtkGDALDEMReader::FindGroundSpacing(bool georeferenced, const double gt[6],
       this->Spacing[a] = this->GeoSpacing[a] * unit;
       this->Origin[a] = this->GeoOrigin[a] * unit;
     }
+    double ground[2];
+    const bool scaled = srs && GroundSpacing(srs, gt, this->Size, ground) &&
+      (std::abs(ground[0] / this->Spacing[0] - 1.0) > 0.01 ||
+        std::abs(ground[1] / this->Spacing[1] - 1.0) > 0.01);
     note << (srs ? "metres from the projected CRS's pixel size"
                  : "pixel size of the file's geotransform (no CRS: taken as metres)");
+    if (scaled)
+    {
+      // Web Mercator's "metres" are sec(latitude) ground metres: slopes need the ground's.
+      note.str("");
+      note << "ground metres at the tile's centre; the projected CRS's units are "
+           << this->Spacing[0] / ground[0] << " of them there";
+      std::copy(ground, ground + 2, this->Spacing);
+    }
     if (!georeferenced)
     {
       note.str("no georeferencing: spacing 1");

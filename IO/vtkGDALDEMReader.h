@@ -21,7 +21,9 @@
  * **Spacing.** The ground spacing comes from the geotransform, so that slopes, and with them
  * apertures, are right:
  * - projected CRS (UTM, national grids): the pixel size in the CRS's linear unit times its
- *   factor to metres; the origin is the first texel's centre in CRS coordinates;
+ *   factor to metres; the origin is the first texel's centre in CRS coordinates. Where those
+ *   are not ground metres (Web Mercator: sec φ of them, 1.22 at 35°), by more than 1% at the
+ *   tile's centre, the ground distance of a pixel there;
  * - geographic CRS (degrees): metres per degree of the WGS 84 ellipsoid at the latitude of the
  *   tile's centre, so that the spacing is exact at the centre and off by the change of cos φ
  *   across the tile (a warning when that is more than 1%); the origin is then (0, 0). A tile

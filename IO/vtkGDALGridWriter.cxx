@@ -101,7 +101,8 @@ public:
 
   bool Create(const int whole[6], const std::vector<std::string>& bands, bool compress,
     const GeoReference& geo, std::string& error);
-  bool WriteBand(int band, int fileRow, int nx, int rows, const float* values, std::string& error);
+  bool WriteBand(int band, int fileColumn, int fileRow, int nx, int rows, const float* values,
+    std::string& error);
   void Keep() { this->Kept = true; }
 
   vtkGDALSession Session;
@@ -117,6 +118,8 @@ bool vtkGDALGridWriter::vtkFile::Create(const int whole[6], const std::vector<st
   GDALDriverH driver = GDALGetDriverByName("GTiff");
   char** options = nullptr;
   options = CSLSetNameValue(options, "TILED", "YES");
+  options = CSLSetNameValue(options, "BLOCKXSIZE", "256");
+  options = CSLSetNameValue(options, "BLOCKYSIZE", "256");
   options = CSLSetNameValue(options, "BIGTIFF", "IF_SAFER");
   if (compress)
   {
@@ -151,10 +154,10 @@ bool vtkGDALGridWriter::vtkFile::Create(const int whole[6], const std::vector<st
 
 //------------------------------------------------------------------------------
 bool vtkGDALGridWriter::vtkFile::WriteBand(
-  int band, int fileRow, int nx, int rows, const float* values, std::string& error)
+  int band, int fileColumn, int fileRow, int nx, int rows, const float* values, std::string& error)
 {
   GDALRasterBandH h = GDALGetRasterBand(this->Dataset, band + 1);
-  if (GDALRasterIO(h, GF_Write, 0, fileRow, nx, rows, const_cast<float*>(values), nx, rows,
+  if (GDALRasterIO(h, GF_Write, fileColumn, fileRow, nx, rows, const_cast<float*>(values), nx, rows,
         GDT_Float32, 0, 0) != CE_None)
   {
     error = "cannot write \"" + this->Name + "\": " + this->Session.LastError();
@@ -275,27 +278,32 @@ int vtkGDALGridWriter::Write()
     vtkErrorMacro("The input is not a 2D image; nothing written.");
     return 0;
   }
-  const int ny = whole[3] - whole[2] + 1;
-  const int tileRows = this->TileRows > 0 ? std::min(this->TileRows, ny) : ny;
+  const int nx = whole[1] - whole[0] + 1, ny = whole[3] - whole[2] + 1;
+  const int rows = this->TileRows > 0 ? std::min(this->TileRows, ny) : ny;
+  const int columns = this->TileColumns > 0 ? std::min(this->TileColumns, nx) : nx;
+  const double tiles = std::ceil(double(ny) / rows) * std::ceil(double(nx) / columns);
   vtkFile file(this->FileName);
   std::vector<std::string> arrays;
   std::vector<float> buffer;
+  int done = 0;
   this->UpdateProgress(0.0);
-  // Tiles from the north (top) row down, the order of the file's rows.
-  for (int top = whole[3]; top >= whole[2]; top -= tileRows)
+  // Tiles from the north (top) row down and west to east, the order of the file's blocks.
+  for (int top = whole[3]; top >= whole[2]; top -= rows)
   {
-    const int tile[6] = { whole[0], whole[1], std::max(whole[2], top - tileRows + 1), top, whole[4],
-      whole[5] };
-    vtkImageData* image = this->UpdateTile(tile);
-    if (!image || (!file.Dataset && !this->CreateFile(file, image, whole, arrays)))
+    for (int left = whole[0]; left <= whole[1]; left += columns)
     {
-      return 0;
+      const int tile[6] = { left, std::min(whole[1], left + columns - 1),
+        std::max(whole[2], top - rows + 1), top, whole[4], whole[5] };
+      vtkImageData* image = this->UpdateTile(tile);
+      if (!image || (!file.Dataset && !this->CreateFile(file, image, whole, arrays)) ||
+        !this->WriteTile(file, image, tile, whole, arrays, buffer))
+      {
+        return 0;
+      }
+      // Written blocks leave GDAL's cache, which would otherwise grow with the grid.
+      GDALFlushCache(file.Dataset);
+      this->UpdateProgress(++done / tiles);
     }
-    if (!this->WriteTile(file, image, tile, whole, arrays, buffer))
-    {
-      return 0;
-    }
-    this->UpdateProgress(double(whole[3] - tile[2] + 1) / ny);
   }
   file.Keep();
   return 1;
@@ -364,7 +372,8 @@ bool vtkGDALGridWriter::WriteTile(vtkFile& file, vtkImageData* image, const int 
           }
         });
       std::string error;
-      if (!file.WriteBand(band, whole[3] - tile[3], nx, rows, buffer.data(), error))
+      if (!file.WriteBand(
+            band, tile[0] - whole[0], whole[3] - tile[3], nx, rows, buffer.data(), error))
       {
         vtkErrorMacro(<< error);
         return false;
@@ -386,5 +395,6 @@ void vtkGDALGridWriter::PrintSelf(ostream& os, vtkIndent indent)
   }
   os << (this->ArrayNames.empty() ? " (the aperture arrays, or the scalars)\n" : "\n");
   os << indent << "TileRows: " << this->TileRows << "\n";
+  os << indent << "TileColumns: " << this->TileColumns << "\n";
   os << indent << "Compress: " << this->Compress << "\n";
 }

@@ -24,11 +24,14 @@
  *
  * **No-data.** Texels whose `vtkValidPointMask` is 0 are written as NaN, the bands' no-data value.
  *
- * **Streaming.** Write() asks the upstream pipeline for TileRows rows at a time (its update
- * extent), writes them and lets them go, so that only one tile (and what the pipeline keeps for
- * it) is in memory; vtkAperturePrecompute then computes each tile from the tile grown by its
- * MaximumDistance. TileRows 0 writes the whole extent at once. The file is a tiled, BigTIFF-when-
- * needed GeoTIFF; with Compress on, DEFLATE with the floating-point predictor.
+ * **Streaming.** Write() asks the upstream pipeline for one tile of TileRows × TileColumns
+ * texels at a time (its update extent), writes it and lets it go, so that only one tile (and
+ * what the pipeline keeps for it) is in memory, whatever the size of the grid;
+ * vtkAperturePrecompute then computes each tile from the tile grown by its MaximumDistance.
+ * 0 rows or columns: the whole extent's. Each tile's blocks are flushed out of GDAL's block
+ * cache once written; multiples of 256 (the file's blocks) are written without reading back. The
+ * file is a tiled, BigTIFF-when- needed GeoTIFF; with Compress on, DEFLATE with the floating-point
+ * predictor.
  *
  * An input that is not a 2D image, a missing array, a file that cannot be created, or an upstream
  * failure is an error, and no partial file is left behind.
@@ -73,10 +76,13 @@ public:
 
   ///@{
   /**
-   * Rows per tile requested from the pipeline; 0 writes the whole extent at once. Default 1024.
+   * Rows and columns of the tiles requested from the pipeline; 0: the whole extent's. Default
+   * 1024 rows of the whole width.
    */
   vtkSetClampMacro(TileRows, int, 0, VTK_INT_MAX);
   vtkGetMacro(TileRows, int);
+  vtkSetClampMacro(TileColumns, int, 0, VTK_INT_MAX);
+  vtkGetMacro(TileColumns, int);
   ///@}
 
   ///@{
@@ -102,6 +108,7 @@ protected:
   std::string FileName;
   std::vector<std::string> ArrayNames;
   int TileRows = 1024;
+  int TileColumns = 0;
   bool Compress = false;
 
 private:

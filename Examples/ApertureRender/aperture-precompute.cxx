@@ -49,7 +49,7 @@ options:
   --max-distance M       horizon search radius in metres (default: none, the whole DEM). With a
                          radius the DEM is read and computed in tiles, in bounded memory
   --sectors D            azimuth sectors, 4 to 1024 (default 32)
-  --tile-rows N          rows per tile with --max-distance (default 1024)
+  --tile-size N          tiles of N x N texels with --max-distance (default 5120)
   --vertical-scale S     factor from the DEM's height unit to metres (default 1; 0.3048: feet)
   --compress             DEFLATE-compress the output
   -q, --quiet            no progress bar or summary
@@ -65,7 +65,7 @@ struct Options
   std::string Input, Output;
   double MaximumDistance = 0.0;
   int Sectors = 32;
-  int TileRows = 1024;
+  int TileSize = 5120;
   double VerticalScale = 1.0;
   bool Compress = false, Quiet = false;
 };
@@ -125,14 +125,14 @@ bool Parse(const std::vector<std::string>& args, Options& o, int& status)
       }
       (a == "--max-distance" ? o.MaximumDistance : o.VerticalScale) = v;
     }
-    else if (a == "--sectors" || a == "--tile-rows")
+    else if (a == "--sectors" || a == "--tile-size")
     {
       const bool sectors = a == "--sectors";
       if (!Number(args, k, sectors ? 4 : 1, sectors ? 1024 : 1e9, v, status))
       {
         return false;
       }
-      (sectors ? o.Sectors : o.TileRows) = static_cast<int>(v);
+      (sectors ? o.Sectors : o.TileSize) = static_cast<int>(v);
     }
     else if (a == "--compress" || a == "-q" || a == "--quiet")
     {
@@ -189,7 +189,8 @@ int main(int argc, char* argv[])
   vtkNew<vtkGDALGridWriter> writer;
   writer->SetInputConnection(filter->GetOutputPort());
   writer->SetFileName(o.Output.c_str());
-  writer->SetTileRows(o.MaximumDistance > 0.0 ? o.TileRows : 0);
+  writer->SetTileRows(o.MaximumDistance > 0.0 ? o.TileSize : 0);
+  writer->SetTileColumns(o.MaximumDistance > 0.0 ? o.TileSize : 0);
   writer->SetCompress(o.Compress);
 
   const auto start = std::chrono::steady_clock::now();

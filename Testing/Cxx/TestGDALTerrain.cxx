@@ -27,6 +27,7 @@
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkStringArray.h"
@@ -218,6 +219,30 @@ void TestGeographic()
   Check(FailsClearly(reader), "a tile at the pole is an error");
 }
 
+// Web Mercator's metres are sec(latitude) ground metres: at 35 degrees north, 30 of them are
+// 30 cos 35 = 24.57 m on the ground (the sphere's scale; the ellipsoid's differs by < 0.5%).
+void TestWebMercator()
+{
+  FileSpec spec;
+  spec.EPSG = 3857;
+  const double y =
+    6378137.0 * std::log(std::tan(0.25 * vtkMath::Pi() + 0.5 * 35.0 * vtkMath::Pi() / 180.0));
+  const double gt[6] = { 15400000.0, 30.0, 0.0, y + 0.5 * spec.Ny * 30.0, 0.0, -30.0 };
+  std::copy(gt, gt + 6, spec.GeoTransform);
+  vtkNew<vtkGDALDEMReader> reader;
+  reader->SetFileName(WriteDEM("mercator.tif", spec).c_str());
+  reader->Update();
+  const double want = 30.0 * std::cos(35.0 * vtkMath::Pi() / 180.0);
+  for (int a = 0; a < 2; ++a)
+  {
+    const double got = reader->GetOutput()->GetSpacing()[a];
+    Check(std::abs(got / want - 1.0) < 5e-3,
+      "Web Mercator: ground metres along axis " + std::to_string(a), got, want);
+  }
+  Check(std::string(reader->GetGroundSpacingNote()).find("ground metres") != std::string::npos,
+    "Web Mercator: the note says the CRS's units are not ground metres");
+}
+
 void TestBadFiles()
 {
   vtkNew<vtkGDALDEMReader> reader;
@@ -332,6 +357,7 @@ void TestTiledRoundTrip()
   vtkNew<vtkGDALGridWriter> writer;
   writer->SetInputConnection(tiled->GetOutputPort());
   writer->SetTileRows(16);
+  writer->SetTileColumns(23);
   const std::string out = Directory + "/apertures.tif";
   writer->SetFileName(out.c_str());
   Check(writer->Write() == 1, "round trip: written");
@@ -383,7 +409,7 @@ void TestTiledRoundTrip()
   Check(mask != nullptr, "round trip: the DEM's no-data is masked in the output");
   Check(maskWrong == 0, "round trip: NaN exactly at no-data texels", maskWrong, 0);
   Check(worst <= 1e-6, "round trip: tiled file == untiled filter", worst, 1e-6);
-  std::cout << "Tiled (16 rows) vs untiled: max difference " << worst << ", largest read "
+  std::cout << "Tiled (16 x 23) vs untiled: max difference " << worst << ", largest read "
             << spy.Largest << " of " << spec.Nx * spec.Ny << " texels\n";
 
   // What the writer refuses.
@@ -445,6 +471,7 @@ int TestGDALTerrain(int argc, char* argv[])
   TestProjected();
   TestTypesScaleAndVerticalScale();
   TestGeographic();
+  TestWebMercator();
   TestBadFiles();
   TestTiledRoundTrip();
   TestDegenerate();

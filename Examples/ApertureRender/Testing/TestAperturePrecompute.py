@@ -89,17 +89,17 @@ if info:
     check(abs(valid - 100 * (1 - 24 / 128 ** 2)) < 0.006,  # gdalinfo prints 2 decimals
           f"exactly the 24 no-data texels are NaN (no-data): {valid}% valid")
 
-# Tiles of 5 and of 37 rows with a search radius: the same contents as one piece with it.
+# Tiles of 5 x 5 and of 37 x 37 with a search radius: the same contents as one piece with it.
 sums = []
 for rows in ("5", "37", "100000"):
     name = path(f"tiled-{rows}.tif")
-    result = run(dem, "-o", name, "--sectors", "16", "--max-distance", "1500", "--tile-rows",
+    result = run(dem, "-o", name, "--sectors", "16", "--max-distance", "1500", "--tile-size",
                  rows, "--quiet")
-    check(result.returncode == 0, f"--max-distance 1500 --tile-rows {rows}: exit 0")
+    check(result.returncode == 0, f"--max-distance 1500 --tile-size {rows}: exit 0")
     tiled = gdalinfo(name, "-checksum")
     sums.append([b.get("checksum") for b in tiled["bands"]] if tiled else None)
 check(sums[0] is not None and sums[0] == sums[1] == sums[2],
-      "tiles of 5, 37 rows and one piece: identical bands " + str(sums))
+      "tiles of 5 x 5, 37 x 37 and one piece: identical bands " + str(sums))
 
 # Progress and summary on a normal run.
 result = run(dem, "-o", path("summary.tif"), "--sectors", "8")
