@@ -40,7 +40,7 @@ test: build
 	  ctest --output-on-failure --parallel $(JOBS)
 
 # The pictures in README.md and docs/: every shading mode on the Fuji terrain and on the bunny, the
-# aperture radius as colours, HDR environments, dynamic scenes and real meshes.
+# aperture radius as colours, HDR environments, dynamic scenes, real meshes and a 10,000² DEM.
 pictures: build
 	@mkdir -p docs/images $(BUILD_DIR)/demo
 	@$(RENDER) -o docs/images/fuji.png --size 1280x800 \
@@ -62,6 +62,8 @@ pictures: build
 	  Testing/Data/env/forest.exr docs/images/dynamic-orbit.png > /dev/null
 	@. $(BUILD_DIR)/env.sh && $(XVFB) $(PYTHON) Utilities/Pictures/real_meshes.py \
 	  $(BUILD_DIR)/bin/aperture-render Testing/Data $(BUILD_DIR)/demo/real docs/images
+	@. $(BUILD_DIR)/env.sh && $(XVFB) $(PYTHON) Utilities/Pictures/big_terrain.py \
+	  $(BUILD_DIR)/bin/aperture-render Testing/Data $(BUILD_DIR)/demo/terrain docs/images
 
 # The accuracy evaluation (docs/evaluation-tables.md, docs/images/evaluation-montage.png) and the
 # performance report (docs/performance.md and its plots); REPORT_MAX_LEVEL limits Table 1.

@@ -526,7 +526,10 @@ void vtkApertureLightingInterface::SetTextureParameters(vtkShaderProgram* progra
   {
     return;
   }
-  this->UploadTexture(renderer);
+  if (!this->UploadTexture(renderer))
+  {
+    return;
+  }
   this->Texture->Activate();
   program->SetUniformi("apertureTexture", this->Texture->GetTextureUnit());
   // Texel centres hold the grid points: u = (s + 1/2)/n for grid coordinate s, and
@@ -554,16 +557,25 @@ void vtkApertureLightingInterface::SetTextureParameters(vtkShaderProgram* progra
 }
 
 //------------------------------------------------------------------------------
-void vtkApertureLightingInterface::UploadTexture(vtkRenderer* renderer)
+bool vtkApertureLightingInterface::UploadTexture(vtkRenderer* renderer)
 {
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   if (this->Texture && this->TextureTime > this->ApertureImage->GetMTime() &&
     this->Texture->GetContext() == window)
   {
-    return;
+    return true;
   }
   int dims[3];
   this->ApertureImage->GetDimensions(dims);
+  const int largest = vtkTextureObject::GetMaximumTextureSize(window);
+  if (std::max(dims[0], dims[1]) > largest)
+  {
+    vtkErrorMacro("The aperture grid of "
+      << dims[0] << " x " << dims[1] << " texels is larger than this OpenGL's textures (" << largest
+      << " a side); resample it (vtkImageResize) first.");
+    this->Texture = nullptr;
+    return false;
+  }
   vtkPointData* pd = this->ApertureImage->GetPointData();
   vtkDataArray* bent = pd->GetArray(this->BentNormalArrayName.c_str());
   vtkDataArray* radius = pd->GetArray(this->ApertureRadiusArrayName.c_str());
@@ -588,6 +600,7 @@ void vtkApertureLightingInterface::UploadTexture(vtkRenderer* renderer)
   this->Texture->SetMagnificationFilter(vtkTextureObject::Linear);
   this->Texture->Create2DFromRaw(dims[0], dims[1], 4, VTK_FLOAT, texels.data());
   this->TextureTime.Modified();
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -269,7 +269,8 @@ private:
   void SetLightParameters(vtkShaderProgram* program, vtkRenderer* renderer);
   void SetTextureParameters(vtkShaderProgram* program, vtkRenderer* renderer, bool inputTCoords,
     const double shift[3], const double scale[3]);
-  void UploadTexture(vtkRenderer* renderer);
+  // False, after an error, when the grid is larger than the context's textures.
+  bool UploadTexture(vtkRenderer* renderer);
   // Builds the environment sky's table and uploads it as a 3D texture, when the environment's
   // image or blur changed.
   void UploadSkyTable(vtkRenderer* renderer);

@@ -83,6 +83,7 @@ std::string Fingerprint(const Input& input, const Options& options)
   Hash hash;
   hash.Add(std::string("aperture-render " APERTURE_RENDER_VERSION));
   hash.Add(static_cast<double>(options.Rays));
+  hash.Add(static_cast<double>(options.RaysGiven ? -1 : options.Sectors));
   if (input.Heights)
   {
     int dims[3];

@@ -20,6 +20,7 @@
 #include "vtkCellArray.h"
 #include "vtkDEMReader.h"
 #include "vtkFloatArray.h"
+#include "vtkGDALDEMReader.h"
 #include "vtkImageReader2.h"
 #include "vtkImageResize.h"
 #include "vtkMath.h"
@@ -28,7 +29,6 @@
 #include "vtkPNGReader.h"
 #include "vtkPNGValidator.h"
 #include "vtkPointData.h"
-#include "vtkTIFFReader.h"
 #include "vtkTerrainRGBReader.h"
 #include "vtksys/SystemTools.hxx"
 
@@ -183,6 +183,13 @@ bool CheckDEM(const std::string& name, std::string& error)
   return true;
 }
 
+// Extensions read as single-band DEMs through GDAL.
+bool IsGDALRaster(const std::string& extension)
+{
+  return extension == ".tif" || extension == ".tiff" || extension == ".asc" ||
+    extension == ".img" || extension == ".vrt";
+}
+
 // The heights of an image's first scalar component as a float Elevation array, on a copy of
 // its grid.
 vtkSmartPointer<vtkImageData> AsHeights(vtkImageData* image)
@@ -236,31 +243,32 @@ bool LoadHeightField(const std::string& name, const std::string& extension, cons
       kind = png->GetDataScalarType() == VTK_UNSIGNED_SHORT ? "16-bit grey" : "8-bit grey";
     }
   }
-  else if (extension == ".tif" || extension == ".tiff")
+  else if (IsGDALRaster(extension))
   {
-    vtkNew<vtkTIFFReader> tiff;
-    if (!tiff->CanReadFile(name.c_str()))
+    vtkNew<vtkGDALDEMReader> raster;
+    raster->SetFileName(name.c_str());
+    raster->Update();
+    if (!messages.FirstError().empty())
     {
-      error = Quoted(name) + " is not a TIFF file";
+      error = "cannot read " + Quoted(name) + ": " + messages.FirstError();
       return false;
     }
-    tiff->SetFileName(name.c_str());
-    tiff->Update();
-    vtkDataArray* scalars = tiff->GetOutput()->GetPointData()->GetScalars();
-    if (!messages.FirstError().empty() || !scalars)
+    image = raster->GetOutput();
+    const bool georeferenced = messages.Warnings().empty() ||
+      messages.Warnings()[0].find("not georeferenced") == std::string::npos;
+    if (options.Spacing > 0.0 || !georeferenced)
     {
-      error = "cannot read " + Quoted(name) + ": " + messages.FirstErrorOr("no image data");
-      return false;
+      image->SetSpacing(spacing, spacing, 1.0);
     }
-    if (scalars->GetNumberOfComponents() != 1)
+    else
     {
-      error = Quoted(name) + " has " + std::to_string(scalars->GetNumberOfComponents()) +
-        " channels; a height field needs one grey channel";
-      return false;
+      input.Notes.push_back(std::string("ground spacing: ") + raster->GetGroundSpacingNote());
     }
-    image = AsHeights(tiff->GetOutput());
-    image->SetSpacing(spacing, spacing, 1.0);
-    kind = "TIFF";
+    kind = georeferenced ? "GeoTIFF/GDAL" : "TIFF/GDAL";
+    if (extension == ".tif" || extension == ".tiff")
+    {
+      kind = georeferenced ? "GeoTIFF" : "TIFF";
+    }
   }
   else if (extension == ".dem")
   {
@@ -372,8 +380,9 @@ void FillVoids(Input& input)
     input.Notes.push_back(std::to_string(voids) + " samples without data set to the lowest height");
   }
 }
+}
 
-// Grids larger than --max-grid are resampled, keeping their extent on the ground.
+//------------------------------------------------------------------------------
 void Resample(Input& input, int maximum)
 {
   int dims[3];
@@ -394,7 +403,6 @@ void Resample(Input& input, int maximum)
   input.Notes.push_back("resampled from " + std::to_string(dims[0]) + " x " +
     std::to_string(dims[1]) + " to " + std::to_string(nx) + " x " + std::to_string(ny) +
     " samples (--max-grid)");
-}
 }
 
 bool LoadInput(const Options& options, MessageCapture& messages, Input& input, std::string& error)
@@ -440,7 +448,8 @@ bool LoadInput(const Options& options, MessageCapture& messages, Input& input, s
     const std::string extension =
       vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(name));
     static const std::vector<std::string> meshes = { ".obj", ".ply", ".stl", ".vtp", ".vtk" };
-    static const std::vector<std::string> fields = { ".png", ".tif", ".tiff", ".dem", ".hgt" };
+    static const std::vector<std::string> fields = { ".png", ".tif", ".tiff", ".asc", ".img",
+      ".vrt", ".dem", ".hgt" };
     if (std::find(meshes.begin(), meshes.end(), extension) != meshes.end())
     {
       if (!LoadMesh(name, extension, messages, input, error))
@@ -454,7 +463,7 @@ bool LoadInput(const Options& options, MessageCapture& messages, Input& input, s
     {
       error = Quoted(name) + " has an unknown format" +
         (extension.empty() ? std::string() : " (" + extension + ")") +
-        "; known: .obj .ply .stl .vtp .vtk .png .tif .tiff .dem .hgt";
+        "; known: .obj .ply .stl .vtp .vtk .png .tif .tiff .asc .img .vrt .dem .hgt";
       return false;
     }
     if (!LoadHeightField(name, extension, options, messages, input, error))
@@ -463,7 +472,6 @@ bool LoadInput(const Options& options, MessageCapture& messages, Input& input, s
     }
   }
   FillVoids(input);
-  Resample(input, options.MaximumGrid);
   return true;
 }
 

@@ -45,6 +45,10 @@ struct Input
 // sentence in `error` when the input cannot be used.
 bool LoadInput(const Options& options, MessageCapture& messages, Input& input, std::string& error);
 
+// Resamples a height field larger than `maximum` samples a side to at most that, keeping its
+// extent on the ground (for rays, which cost per sample).
+void Resample(Input& input, int maximum);
+
 // Reads the --env environment, if any, into `input`. Returns false with one sentence in `error`
 // when the file cannot be used.
 bool LoadEnvironment(

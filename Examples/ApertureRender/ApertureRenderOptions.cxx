@@ -79,8 +79,8 @@ const std::vector<std::string>& ModeNames()
 
 int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
 {
-  std::string output, size, mode, show, sky, rays, cache, saveData, azimuth, elevation, zoom, up,
-    spacing, heightScale, maximumGrid, background, environment, environmentAzimuth,
+  std::string output, size, mode, show, sky, rays, sectors, cache, saveData, azimuth, elevation,
+    zoom, up, spacing, heightScale, maximumGrid, background, environment, environmentAzimuth,
     environmentExposure, crease, maximumEdge;
   std::vector<std::string> suns, sphereLights;
   bool interactive = false, help = false, version = false;
@@ -103,6 +103,7 @@ int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
   arguments.AddArgument("--env-azimuth", value, &environmentAzimuth, "");
   arguments.AddArgument("--env-exposure", value, &environmentExposure, "");
   arguments.AddArgument("--rays", value, &rays, "");
+  arguments.AddArgument("--sectors", value, &sectors, "");
   arguments.AddArgument("--crease", value, &crease, "");
   arguments.AddArgument("--max-edge", value, &maximumEdge, "");
   arguments.AddArgument("--cache", value, &cache, "");
@@ -122,8 +123,8 @@ int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
   // An option that takes a value cannot be the last word.
   static const std::set<std::string> takesValue = { "-o", "--output", "--size", "--mode", "--show",
     "--sun", "--sphere-light", "--sky", "--env", "--env-azimuth", "--env-exposure", "--rays",
-    "--crease", "--max-edge", "--cache", "--save-data", "--azimuth", "--elevation", "--zoom",
-    "--up", "--spacing", "--height-scale", "--max-grid", "--background" };
+    "--sectors", "--crease", "--max-edge", "--cache", "--save-data", "--azimuth", "--elevation",
+    "--zoom", "--up", "--spacing", "--height-scale", "--max-grid", "--background" };
   if (argc > 1 && takesValue.count(argv[argc - 1]))
   {
     error = std::string("option ") + argv[argc - 1] + " needs a value (see --help)";
@@ -303,6 +304,16 @@ int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
       return 2;
     }
     options.Rays = static_cast<int>(number);
+    options.RaysGiven = true;
+  }
+  if (!sectors.empty())
+  {
+    if (!ToNumber(sectors, number) || number != std::floor(number) || number < 4 || number > 1024)
+    {
+      error = "--sectors " + Quoted(sectors) + " is not a whole number from 4 to 1024";
+      return 2;
+    }
+    options.Sectors = static_cast<int>(number);
   }
   if (!crease.empty() &&
     (!ToNumber(crease, options.Crease) || options.Crease < 0.0 || options.Crease > 180.0))
@@ -384,14 +395,18 @@ std::string HelpText()
 
 Usage: aperture-render [INPUT] (-o PICTURE.png | --interactive) [options]
 
-Computes, for every point, the cap of sky it can see (vtkAperturePrecompute, Embree rays), then
-renders the surface with vtkApertureLightingMapper under suns, sphere lights and a sky.
+Computes, for every point, the cap of sky it can see (vtkAperturePrecompute: Embree rays for
+meshes, horizon sweeps for height fields), then renders the surface with
+vtkApertureLightingMapper under suns, sphere lights and a sky.
 
 INPUT (optional; without it, the embedded Mount Fuji tile: 512 x 512 samples 60 m apart,
 heights x 1.5):
   meshes           .obj .ply .stl .vtp .vtk (VTK legacy)
   height fields    .png: Terrain-RGB (height = -10000 + (R*65536 + G*256 + B) * 0.1 m) when it has
-                   colour, else 8- or 16-bit grey heights; .tif/.tiff grey heights;
+                   colour, else 8- or 16-bit grey heights; .tif/.tiff (GeoTIFF or grey),
+                   .asc (ESRI ASCII grid), .img (ERDAS), .vrt (GDAL virtual raster): single-band
+                   DEMs through GDAL, spacing from their georeferencing, no-data filled with
+                   the lowest height for the picture (and neither occluding nor receiving);
                    .dem (USGS DEM); .hgt (SRTM, 1 or 3 arc-seconds)
 
 Output:
@@ -428,7 +443,9 @@ Lights and shading:
                          scale that shows an open, level surface at 80% white
   --mode MODE            exact (default), smoothstep, simplified, bentnormal, standard (plain VTK
                          lighting), or all: one picture with a panel per mode
-  --rays N               rays per point for the apertures (default 256)
+  --rays N               rays per point for the apertures (default 256); height fields cast
+                         rays only when --rays is given
+  --sectors D            height fields: horizon sweeps in D azimuth sectors (default 32)
   --crease DEG           meshes: where faces meet at more than DEG degrees, each side gets its
                          own normal and aperture, as a CAD part's sharp edges need (default 60:
                          tessellated curves and scan noise stay smooth); 180 never splits
@@ -452,7 +469,9 @@ Height fields:
   --spacing METRES       ground distance between samples (default: from a .dem or .hgt file, 60
                          for the embedded tile, else 30)
   --height-scale F       vertical exaggeration (default 1; 1.5 for the embedded tile)
-  --max-grid N           resample larger grids to at most N x N samples (default 1024)
+  --max-grid N           larger grids are drawn as a mesh of at most N x N samples (default
+                         1024), shaded per texel from the apertures of the whole grid (with
+                         --rays: the grid is resampled before the rays)
 
   -h, --help             this text
   --version              the version

@@ -50,6 +50,9 @@ struct Options
   // Stops by which the environment is brightened; NaN: automatic (an open level surface at 0.8).
   double EnvironmentExposure;
   int Rays = 256;
+  // Height fields cast Rays only when --rays is given; else horizon sweeps in Sectors sectors.
+  bool RaysGiven = false;
+  int Sectors = 32;
   // Creases: normals and apertures split where faces meet at more than this (degrees).
   double Crease = 60.0;
   // Meshes: refine to edges of at most this length; NaN: automatically, 0: never.
@@ -65,7 +68,7 @@ struct Options
   // for the embedded tile).
   double Spacing = 0.0;
   double HeightScale = 0.0;
-  int MaximumGrid = 1024;
+  int MaximumGrid = 1024; // larger grids: a mesh of at most this many samples a side
   double Background[3] = { 0.09, 0.1, 0.12 };
   bool Help = false;
   bool Version = false;

@@ -26,6 +26,7 @@
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkEnvironmentMap.h"
+#include "vtkExtractVOI.h"
 #include "vtkIdList.h"
 #include "vtkImageAppend.h"
 #include "vtkImageData.h"
@@ -133,9 +134,23 @@ View::View(const Options& options, const Input& input, vtkDataObject* apertures)
   if (this->HeightField)
   {
     // The grid's surface, raised as vtkAperturePrecompute raised it; point data (the apertures)
-    // come along.
+    // come along. A grid larger than --max-grid is drawn from every k-th sample and shaded per
+    // texel from the whole grid's apertures.
+    auto* image = vtkImageData::SafeDownCast(apertures);
+    int dims[3];
+    image->GetDimensions(dims);
+    const int stride =
+      (std::max(dims[0], dims[1]) + options.MaximumGrid - 2) / std::max(1, options.MaximumGrid - 1);
+    vtkNew<vtkExtractVOI> coarse;
+    coarse->SetInputData(apertures);
+    coarse->SetSampleRate(stride, stride, 1);
+    coarse->IncludeBoundaryOn();
+    if (stride > 1)
+    {
+      this->Mapper->SetApertureImage(image);
+    }
     vtkNew<vtkImageDataGeometryFilter> grid;
-    grid->SetInputData(apertures);
+    grid->SetInputConnection(coarse->GetOutputPort());
     vtkNew<vtkWarpScalar> warp;
     warp->SetInputConnection(grid->GetOutputPort());
     warp->SetScaleFactor(options.HeightScale);

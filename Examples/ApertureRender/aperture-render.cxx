@@ -121,6 +121,13 @@ int main(int argc, char* argv[])
     return Fail(error, 1);
   }
   const bool field = input.Heights != nullptr;
+  const bool rays = !field || options.RaysGiven;
+  if (field)
+  {
+    // Rays cost per sample: resample first. Horizons take the whole grid, up to the largest
+    // texture OpenGL implementations commonly have (16384), which shades the drawn mesh.
+    Resample(input, rays ? options.MaximumGrid : 16384);
+  }
   const std::string wanted = field ? ".vti" : ".vtp";
   auto extension = [](const std::string& path)
   { return vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(path)); };
@@ -168,6 +175,11 @@ int main(int argc, char* argv[])
       precompute->SetInputData(input.Mesh);
     }
     precompute->SetNumberOfRays(options.Rays);
+    precompute->SetNumberOfSectors(options.Sectors);
+    if (rays)
+    {
+      precompute->SetMethodToRays();
+    }
     precompute->SetHeightScale(options.HeightScale);
     precompute->SetFeatureAngle(options.Crease);
     precompute->SetMaximumEdgeLength(input.MaximumEdge);
@@ -185,8 +197,10 @@ int main(int argc, char* argv[])
     }
     apertures = precompute->GetOutputDataObject(0);
     const vtkIdType points = vtkDataSet::SafeDownCast(apertures)->GetNumberOfPoints();
-    std::cout << "apertures: " << points << " points x " << options.Rays << " rays in "
-              << seconds.count() << " s\n";
+    std::cout << "apertures: " << points << " points x "
+              << (rays ? std::to_string(options.Rays) + " rays"
+                       : std::to_string(options.Sectors) + " horizon sectors")
+              << " in " << seconds.count() << " s\n";
     if (!options.Cache.empty())
     {
       if (!WriteCache(options.Cache, apertures, fingerprint, messages, error))

@@ -186,6 +186,23 @@ expect_picture("legacy unstructured grid", [path("cube-tetrahedra.vtk"), *FAST, 
 expect_picture("Terrain-RGB tile", [fuji_png, *FAST], needles=("Terrain-RGB", "resampled"))
 expect_picture("16-bit grey PNG", [path("fuji-grey16.png"), *FAST], needles=("16-bit grey",))
 expect_picture("TIFF", [path("fuji.tif"), *FAST], needles=("TIFF",))
+# Horizons (no --rays) on a grid larger than --max-grid: the whole grid's apertures shade a
+# decimated mesh per texel; a GeoTIFF with a CRS and no-data through GDAL.
+NO_RAYS = ["--size", "200x150", "--max-grid", "96"]
+expect_picture("horizons per texel", [path("fuji.tif"), *NO_RAYS],
+               needles=("horizon sectors", "16384 points"))
+with open(path("fuji.asc"), "w") as f:
+    f.write("ncols 64\nnrows 64\nxllcorner 300000\nyllcorner 3900000\ncellsize 50\n"
+            "NODATA_value -9999\n")
+    for r in range(64):
+        f.write(" ".join("-9999" if (r, c) == (10, 10) else f"{500 + 300 * np.sin(r / 9.0) * np.cos(c / 7.0):.1f}"
+                         for c in range(64)) + "\n")
+subprocess.run(["gdal_translate", "-q", "-a_srs", "EPSG:32654", path("fuji.asc"),
+                path("fuji-utm.tif")], check=True)
+expect_picture("GeoTIFF", [path("fuji-utm.tif"), *NO_RAYS],
+               needles=("GeoTIFF height field, 64 x 64 samples, 50 m apart",
+                        "ground spacing: metres", "1 samples without data"))
+expect_picture("ESRI ASCII grid", [path("fuji.asc"), *NO_RAYS], needles=("50 m apart",))
 expect_picture("SRTM tile", [path("N35E138.hgt"), *FAST],
                needles=("SRTM", "4 samples without data"))
 expect_picture("USGS DEM", [path("fuji.dem"), *FAST],
