@@ -6,11 +6,12 @@
 Runs BenchmarkAperturePrecompute (filter against bare Embree), BenchmarkOcclusionQueryVisibility
 (the paper's Table 1 per backend, up to --max-level: level 4 with the OcclusionQuery backend takes
 minutes on llvmpipe), BenchmarkApertureLightingMapper (frame-time ratios) and
-BenchmarkEnvironmentLighting (relighting) and BenchmarkDynamicVisibility (Table 1's dynamic rows
-and the filtered orbit), each printing its own side-by-side ratios, then three
-sweeps measured here: precompute time against vertices (Fuji grids), visibility time against k
-(bunny, RayCast and DepthCompare) and aperture error against rays (bunny, stratified and random
-against 4096 rays). Writes performance.md and images/performance-*.png under --out. Needs an X
+BenchmarkEnvironmentLighting (relighting), BenchmarkDynamicVisibility (Table 1's dynamic rows
+and the filtered orbit) and BenchmarkTerrain (horizons against rays, a 10,000² GeoTIFF, memory
+over DEM sizes), each printing its own side-by-side ratios, then four sweeps measured here:
+precompute time (rays) against vertices (Fuji grids), horizon time against texels x sectors,
+visibility time against k (bunny, RayCast and DepthCompare) and aperture error against rays
+(bunny, stratified and random against 4096 rays). Writes performance.md and images/performance-*.png under --out. Needs an X
 display (run it under xvfb-run, as `make report` does).
 """
 
@@ -21,6 +22,7 @@ import os
 import platform
 import subprocess
 import sys
+import tempfile
 import time
 
 import numpy as np
@@ -120,12 +122,37 @@ def precompute_sweep(data):
         resize.Update()
         precompute = vtkAperturePrecompute()
         precompute.SetInputConnection(resize.GetOutputPort())
+        precompute.SetMethodToRays()
         precompute.SetNumberOfRays(256)
         start = time.perf_counter()
         precompute.Update()
         points.append(side * side)
         seconds.append(time.perf_counter() - start)
     return points, seconds
+
+
+def horizon_sweep(data):
+    """Horizon-sweep seconds on Fuji grids of growing size, per sector count."""
+    result = {}
+    for sectors in (8, 16, 32, 64):
+        work, seconds = [], []
+        for side in (256, 512, 1024, 2048, 4096):
+            reader = vtkTerrainRGBReader()
+            reader.SetFileName(os.path.join(data, "fuji-terrain-rgb.png"))
+            reader.SetSpacing(30.0, 30.0)
+            resize = vtkImageResize()
+            resize.SetInputConnection(reader.GetOutputPort())
+            resize.SetOutputDimensions(side, side, 1)
+            resize.Update()
+            precompute = vtkAperturePrecompute()
+            precompute.SetInputConnection(resize.GetOutputPort())
+            precompute.SetNumberOfSectors(sectors)
+            start = time.perf_counter()
+            precompute.Update()
+            work.append(side * side * sectors)
+            seconds.append(time.perf_counter() - start)
+        result[f"{sectors} sectors"] = (work, seconds)
+    return result
 
 
 def visibility_sweep(bunny):
@@ -180,10 +207,12 @@ def main():
                         ("BenchmarkOcclusionQueryVisibility", ["--max-level", args.max_level]),
                         ("BenchmarkApertureLightingMapper", []),
                         ("BenchmarkEnvironmentLighting", []),
-                        ("BenchmarkDynamicVisibility", ["--max-level", args.max_level])):
+                        ("BenchmarkDynamicVisibility", ["--max-level", args.max_level]),
+                        ("BenchmarkTerrain", [tempfile.gettempdir()])):
         print("running", name, *extra, flush=True)
         text, seconds = run_benchmark(os.path.join(args.bin, name), args.data, *extra)
-        sections.append(f"## {name}\n\n`{name} Testing/Data {' '.join(extra)}` "
+        anchor = '<a id="terrain"></a>\n\n' if name == "BenchmarkTerrain" else ""
+        sections.append(f"{anchor}## {name}\n\n`{name} Testing/Data {' '.join(extra)}` "
                         f"({seconds:.0f} s)\n\n{text}\n")
 
     print("sweeps", flush=True)
@@ -199,6 +228,10 @@ def main():
     plot(os.path.join(args.out, "images", "performance-visibility.png"),
          "vtkOcclusionQueryVisibility, bunny", "k (directions)", "seconds",
          [(name, ks, s) for name, (ks, s) in visibility.items()])
+    horizons = horizon_sweep(args.data)
+    plot(os.path.join(args.out, "images", "performance-horizons.png"),
+         "vtkAperturePrecompute horizon sweeps, Fuji grids 256² to 4096²",
+         "texels x sectors", "seconds", [(name, w, s) for name, (w, s) in horizons.items()])
     counts, error = error_sweep(bunny)
     plot(os.path.join(args.out, "images", "performance-rays.png"),
          "Aperture radius error against 4096 rays, bunny", "rays per point",
@@ -213,7 +246,8 @@ def main():
              "## Sweeps", "",
              "![precompute time against points](images/performance-precompute.png)",
              "![visibility time against k](images/performance-visibility.png)",
-             "![aperture error against rays](images/performance-rays.png)", "",
+             "![aperture error against rays](images/performance-rays.png)",
+             "![horizon time against texels x sectors](images/performance-horizons.png)", "",
              "| Fuji grid points | " + " | ".join(str(p) for p in points) + " |",
              "|---|" + "---|" * len(points),
              "| precompute, 256 rays (s) | " + " | ".join(f"{s:.2f}" for s in seconds) + " |", ""]
@@ -221,6 +255,12 @@ def main():
         lines += [f"| bunny visibility, {name}: k | " + " | ".join(str(k) for k in ks) + " |",
                   "|---|" + "---|" * len(ks),
                   "| seconds | " + " | ".join(f"{x:.2f}" for x in s) + " |", ""]
+    for name, (w, s) in horizons.items():
+        lines += [f"| horizons, {name}: texels x sectors (M) | "
+                  + " | ".join(f"{x / 1e6:.0f}" for x in w) + " |", "|---|" + "---|" * len(w),
+                  "| seconds | " + " | ".join(f"{x:.2f}" for x in s) + " |",
+                  "| ns per texel-sector | " + " | ".join(f"{1e9 * t / x:.1f}" for t, x in zip(s, w))
+                  + " |", ""]
     lines += ["| rays | " + " | ".join(str(c) for c in counts) + " | slope |",
               "|---|" + "---|" * (len(counts) + 1)]
     for name, e in error.items():
