@@ -691,6 +691,11 @@ int vtkAperturePrecompute::RequestUpdateExtent(
   int extent[6], whole[6];
   outInfo->Get(SDDP::UPDATE_EXTENT(), extent);
   inInfo->Get(SDDP::WHOLE_EXTENT(), whole);
+  if (extent[1] < extent[0] || extent[3] < extent[2])
+  {
+    inInfo->Set(SDDP::UPDATE_EXTENT(), extent, 6); // an empty piece needs nothing
+    return 1;
+  }
   const int halo =
     vtkHorizonHeightField::Halo(this->MaximumDistance, inInfo->Get(vtkDataObject::SPACING()));
   for (int k = 0; k < 6; ++k)
@@ -720,6 +725,20 @@ int vtkAperturePrecompute::RequestData(
   if (!input || !output)
   {
     vtkErrorMacro("Missing input or output.");
+    return 0;
+  }
+  if (extent && (extent[1] < extent[0] || extent[3] < extent[2]))
+  {
+    output->Initialize(); // an empty piece
+    return 1;
+  }
+  const int* got =
+    vtkImageData::SafeDownCast(input) ? vtkImageData::SafeDownCast(input)->GetExtent() : nullptr;
+  if (got && extent &&
+    (extent[0] < got[0] || extent[1] > got[1] || extent[2] < got[2] || extent[3] > got[3]))
+  {
+    vtkErrorMacro("The input holds texels " << got[0] << ".." << got[1] << " x " << got[2] << ".."
+                                            << got[3] << ", not all of the extent asked for.");
     return 0;
   }
   // 1. Receivers and occluders, checked before any work; horizons or rays.

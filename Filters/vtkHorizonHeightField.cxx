@@ -19,19 +19,26 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <cmath>
+#include <new>
 #include <vector>
 
 namespace
 {
-vtkNew<vtkFloatArray> NewArray(const char* name, int components, vtkIdType tuples)
+// An array of `tuples` tuples, or nullptr when it cannot be allocated.
+vtkSmartPointer<vtkFloatArray> NewArray(const char* name, int components, vtkIdType tuples)
 {
-  vtkNew<vtkFloatArray> array;
+  auto array = vtkSmartPointer<vtkFloatArray>::New();
   array->SetName(name);
   array->SetNumberOfComponents(components);
+  if (!array->Allocate(components * tuples))
+  {
+    return nullptr;
+  }
   array->SetNumberOfTuples(tuples);
   return array;
 }
@@ -126,9 +133,24 @@ vtkIdType vtkHorizonHeightField::Compute(vtkImageData* image, vtkDataArray* heig
   vtkHorizonApertures::Grid grid;
   grid.Nx = window[1] - window[0] + 1;
   grid.Ny = window[3] - window[2] + 1;
+  if (grid.Nx < 1 || grid.Ny < 1 || extent[0] < whole[0] || extent[1] > whole[1] ||
+    extent[2] < whole[2] || extent[3] > whole[3])
+  {
+    error = "The extent asked for lies outside the image.";
+    return -1;
+  }
   std::vector<float> z;
   std::vector<unsigned char> valid;
-  CopyWindow(image, heights, settings.HeightScale, window, z, valid);
+  try
+  {
+    CopyWindow(image, heights, settings.HeightScale, window, z, valid);
+  }
+  catch (const std::bad_alloc&)
+  {
+    error = "There is not enough memory for the " + std::to_string(grid.Nx) + " x " +
+      std::to_string(grid.Ny) + " texels' heights; set a MaximumDistance and stream in tiles.";
+    return -1;
+  }
   grid.Heights = z.data();
   grid.Valid = valid.empty() ? nullptr : valid.data();
   grid.Dx = std::abs(image->GetSpacing()[0]);
@@ -151,9 +173,16 @@ vtkIdType vtkHorizonHeightField::Compute(vtkImageData* image, vtkDataArray* heig
   auto radius = NewArray(settings.RadiusName, 1, texels);
   auto normals = NewArray("Normals", 3, texels);
   vtkSmartPointer<vtkFloatArray> occlusion =
-    settings.AmbientOcclusion ? NewArray(settings.OcclusionName, 1, texels).Get() : nullptr;
+    settings.AmbientOcclusion ? NewArray(settings.OcclusionName, 1, texels) : nullptr;
   vtkNew<vtkUnsignedCharArray> mask;
   mask->SetName(ValidMaskName());
+  if (!bent || !radius || !normals || (settings.AmbientOcclusion && !occlusion) ||
+    !mask->Allocate(texels))
+  {
+    error = "There is not enough memory for the apertures of " + std::to_string(texels) +
+      " texels; set a MaximumDistance and stream in tiles.";
+    return -1;
+  }
   mask->SetNumberOfTuples(texels);
   const vtkHorizonApertures::Buffers buffers{ bent->GetPointer(0), radius->GetPointer(0),
     occlusion ? occlusion->GetPointer(0) : nullptr, normals->GetPointer(0), mask->GetPointer(0) };

@@ -57,6 +57,16 @@ void MetresPerDegree(double semiMajor, double inverseFlattening, double phi, dou
 bool GroundSpacing(
   OGRSpatialReferenceH srs, const double gt[6], const int size[2], double ground[2])
 {
+  const double cx = gt[0] + 0.5 * size[0] * gt[1], cy = gt[3] + 0.5 * size[1] * gt[5];
+  double x[3] = { cx, cx + gt[1], cx }, y[3] = { cy, cy, cy + gt[5] };
+  for (int k = 0; k < 3; ++k)
+  {
+    // No projection reaches past 1e8 m; PROJ can loop for ever on coordinates like 1e40.
+    if (!(std::abs(x[k]) < 1e8 && std::abs(y[k]) < 1e8))
+    {
+      return false;
+    }
+  }
   OGRSpatialReferenceH geographic = OSRCloneGeogCS(srs);
   if (!geographic)
   {
@@ -65,8 +75,6 @@ bool GroundSpacing(
   OSRSetAxisMappingStrategy(geographic, OAMS_TRADITIONAL_GIS_ORDER);
   OSRSetAxisMappingStrategy(srs, OAMS_TRADITIONAL_GIS_ORDER);
   OGRCoordinateTransformationH toGeographic = OCTNewCoordinateTransformation(srs, geographic);
-  const double cx = gt[0] + 0.5 * size[0] * gt[1], cy = gt[3] + 0.5 * size[1] * gt[5];
-  double x[3] = { cx, cx + gt[1], cx }, y[3] = { cy, cy, cy + gt[5] };
   const bool ok = toGeographic && OCTTransform(toGeographic, 3, x, y, nullptr);
   if (ok)
   {
@@ -188,8 +196,15 @@ int vtkGDALDEMReader::RequestInformation(
   }
 
   // Geotransform: x = gt0 + column gt1 + row gt2, y = gt3 + column gt4 + row gt5.
-  double gt[6] = { 0.0, 1.0, 0.0, 0.0, 0.0, -1.0 };
-  const bool georeferenced = GDALGetGeoTransform(raster.Dataset, gt) == CE_None;
+  // Without one GDAL gives (0, 1, 0, 0, 0, 1), south-up; an image's first row is its top.
+  double gt[6];
+  this->Georeferenced = GDALGetGeoTransform(raster.Dataset, gt) == CE_None;
+  if (!this->Georeferenced)
+  {
+    const double image[6] = { 0.0, 1.0, 0.0, 0.0, 0.0, -1.0 };
+    std::copy(image, image + 6, gt);
+  }
+  this->NorthUp = gt[5] < 0.0;
   if (gt[2] != 0.0 || gt[4] != 0.0 || !(gt[1] > 0.0) || gt[5] == 0.0)
   {
     vtkErrorMacro("\"" << this->FileName
@@ -204,7 +219,7 @@ int vtkGDALDEMReader::RequestInformation(
   this->GeoOrigin[1] = gt[5] < 0.0 ? gt[3] + (ny - 0.5) * gt[5] : gt[3] + 0.5 * gt[5];
   const char* wkt = GDALGetProjectionRef(raster.Dataset);
   this->SpatialReference = wkt ? wkt : "";
-  if (!this->FindGroundSpacing(georeferenced, gt, error))
+  if (!this->FindGroundSpacing(gt, error))
   {
     vtkErrorMacro(<< error);
     return 0;
@@ -223,14 +238,21 @@ int vtkGDALDEMReader::RequestInformation(
 }
 
 //------------------------------------------------------------------------------
-bool vtkGDALDEMReader::FindGroundSpacing(bool georeferenced, const double gt[6], std::string& error)
+bool vtkGDALDEMReader::FindGroundSpacing(const double gt[6], std::string& error)
 {
-  OGRSpatialReferenceH srs = this->SpatialReference.empty()
+  OGRSpatialReferenceH srs = this->SpatialReference.empty() || !this->Georeferenced
     ? nullptr
     : OSRNewSpatialReference(this->SpatialReference.c_str());
   this->Geographic = srs && OSRIsGeographic(srs);
   std::ostringstream note;
-  if (this->Geographic)
+  if (!this->Georeferenced)
+  {
+    this->Spacing[0] = this->Spacing[1] = 1.0;
+    this->Origin[0] = this->Origin[1] = 0.0;
+    note << "no georeferencing: spacing 1";
+    vtkWarningMacro("\"" << this->FileName << "\" is not georeferenced: spacing 1.");
+  }
+  else if (this->Geographic)
   {
     const double north = std::max(gt[3], gt[3] + this->Size[1] * gt[5]);
     const double south = std::min(gt[3], gt[3] + this->Size[1] * gt[5]);
@@ -278,11 +300,6 @@ bool vtkGDALDEMReader::FindGroundSpacing(bool georeferenced, const double gt[6],
       note << "ground metres at the tile's centre; the projected CRS's units are "
            << this->Spacing[0] / ground[0] << " of them there";
       std::copy(ground, ground + 2, this->Spacing);
-    }
-    if (!georeferenced)
-    {
-      note.str("no georeferencing: spacing 1");
-      vtkWarningMacro("\"" << this->FileName << "\" is not georeferenced: spacing 1.");
     }
   }
   if (srs)
@@ -335,7 +352,12 @@ int vtkGDALDEMReader::RequestData(
     return 0;
   }
   output->GetPointData()->SetScalars(heights);
-  this->MaskNoData(raster, output);
+  if (!this->MaskNoData(raster, output))
+  {
+    vtkErrorMacro("Cannot allocate the no-data mask of " << nx * ny << " texels.");
+    output->Initialize();
+    return 0;
+  }
   vtkFieldData* field = output->GetFieldData();
   field->AddArray(Pair("GeoOrigin", this->GeoOrigin));
   field->AddArray(Pair("GeoSpacing", this->GeoSpacing));
@@ -348,9 +370,7 @@ int vtkGDALDEMReader::RequestData(
 // The extent's rows, southern first, in blocks with progress between them.
 bool vtkGDALDEMReader::ReadRows(vtkRaster& raster, const int extent[6], float* heights)
 {
-  double gt[6] = { 0.0, 1.0, 0.0, 0.0, 0.0, -1.0 };
-  GDALGetGeoTransform(raster.Dataset, gt);
-  const bool northUp = gt[5] < 0.0;
+  const bool northUp = this->NorthUp;
   const int nx = extent[1] - extent[0] + 1, ny = extent[3] - extent[2] + 1;
   const int rowsPerBlock = std::max(1, (1 << 22) / nx);
   this->UpdateProgress(0.0);
@@ -382,8 +402,9 @@ bool vtkGDALDEMReader::ReadRows(vtkRaster& raster, const int extent[6], float* h
 }
 
 //------------------------------------------------------------------------------
-// Scale and offset applied; no-data and non-finite texels NaN and masked.
-void vtkGDALDEMReader::MaskNoData(vtkRaster& raster, vtkImageData* output)
+// Scale and offset applied; no-data and non-finite texels NaN and masked. False when the mask
+// cannot be allocated.
+bool vtkGDALDEMReader::MaskNoData(vtkRaster& raster, vtkImageData* output)
 {
   int hasNoData = 0, hasScale = 0, hasOffset = 0;
   const double noData = GDALGetRasterNoDataValue(raster.Band, &hasNoData);
@@ -395,6 +416,10 @@ void vtkGDALDEMReader::MaskNoData(vtkRaster& raster, vtkImageData* output)
   const vtkIdType n = heights->GetNumberOfTuples();
   vtkNew<vtkUnsignedCharArray> mask;
   mask->SetName(vtkHorizonHeightField::ValidMaskName());
+  if (!mask->Allocate(n))
+  {
+    return false;
+  }
   mask->SetNumberOfTuples(n);
   unsigned char* valid = mask->GetPointer(0);
   vtkSMPTools::For(0, n,
@@ -411,6 +436,7 @@ void vtkGDALDEMReader::MaskNoData(vtkRaster& raster, vtkImageData* output)
   {
     output->GetPointData()->AddArray(mask);
   }
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -424,6 +450,8 @@ void vtkGDALDEMReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Origin: " << this->Origin[0] << ", " << this->Origin[1] << "\n";
   os << indent << "GeoOrigin: " << this->GeoOrigin[0] << ", " << this->GeoOrigin[1] << "\n";
   os << indent << "GeoSpacing: " << this->GeoSpacing[0] << ", " << this->GeoSpacing[1] << "\n";
+  os << indent << "Georeferenced: " << this->Georeferenced << "\n";
+  os << indent << "NorthUp: " << this->NorthUp << "\n";
   os << indent << "Geographic: " << this->Geographic << "\n";
   os << indent << "GroundSpacingNote: " << this->GroundSpacingNote << "\n";
   os << indent << "SpatialReference: " << (this->SpatialReference.empty() ? "(none)" : "WKT")

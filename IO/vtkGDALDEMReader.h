@@ -28,7 +28,8 @@
  *   tile's centre, so that the spacing is exact at the centre and off by the change of cos φ
  *   across the tile (a warning when that is more than 1%); the origin is then (0, 0). A tile
  *   that reaches a pole is an error;
- * - no georeferencing: spacing 1 (a warning).
+ * - no georeferencing (no geotransform): spacing 1 (a warning), the file's first row the
+ *   northern one, as images are seen.
  * Rotated or sheared geotransforms are an error. How the spacing was found is said in the
  * output's field data (`GroundSpacing`, one sentence) and by GetGroundSpacingNote().
  *
@@ -93,9 +94,11 @@ public:
   const char* GetGroundSpacingNote() const { return this->GroundSpacingNote.c_str(); }
 
   /**
-   * After UpdateInformation(): whether the file's CRS is geographic (degrees).
+   * After UpdateInformation(): whether the file's CRS is geographic (degrees), and whether the
+   * file has a geotransform at all (without one: spacing 1, its first row the northern one).
    */
   vtkGetMacro(Geographic, bool);
+  vtkGetMacro(Georeferenced, bool);
 
 protected:
   vtkGDALDEMReader();
@@ -114,9 +117,9 @@ private:
   void operator=(const vtkGDALDEMReader&) = delete;
 
   class vtkRaster;
-  bool FindGroundSpacing(bool georeferenced, const double geoTransform[6], std::string& error);
+  bool FindGroundSpacing(const double geoTransform[6], std::string& error);
   bool ReadRows(vtkRaster& raster, const int extent[6], float* heights);
-  void MaskNoData(vtkRaster& raster, vtkImageData* output);
+  bool MaskNoData(vtkRaster& raster, vtkImageData* output);
 
   // What RequestInformation found: the grid and its georeferencing.
   int Size[2] = { 0, 0 };
@@ -127,6 +130,8 @@ private:
   std::string SpatialReference;
   std::string GroundSpacingNote;
   bool Geographic = false;
+  bool Georeferenced = false;
+  bool NorthUp = true;
 };
 
 #endif

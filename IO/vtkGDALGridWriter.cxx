@@ -15,6 +15,7 @@
 
 #include "vtkAlgorithmOutput.h"
 #include "vtkDataArray.h"
+#include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -27,13 +28,15 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 
+#include <cpl_error.h>
 #include <cpl_string.h>
+#include <cpl_vsi.h>
 #include <gdal.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
+#include <new>
 
 vtkStandardNewMacro(vtkGDALGridWriter);
 
@@ -87,13 +90,14 @@ public:
   }
   ~vtkFile()
   {
+    const bool remove = this->Dataset != nullptr; // not closed by Flush(): a failed write
     if (this->Dataset)
     {
       GDALClose(this->Dataset);
     }
-    if (this->Dataset && !this->Kept)
+    if (remove)
     {
-      std::remove(this->Name.c_str());
+      VSIUnlink(this->Name.c_str());
     }
   }
   vtkFile(const vtkFile&) = delete;
@@ -103,12 +107,13 @@ public:
     const GeoReference& geo, std::string& error);
   bool WriteBand(int band, int fileColumn, int fileRow, int nx, int rows, const float* values,
     std::string& error);
-  void Keep() { this->Kept = true; }
+  // Writes what GDAL still caches; with `close`, closes the file and keeps it. GDAL reports
+  // failures of these writes (a full disk) only as errors, not as return values.
+  bool Flush(bool close, std::string& error);
 
   vtkGDALSession Session;
   std::string Name;
   GDALDatasetH Dataset = nullptr;
-  bool Kept = false;
 };
 
 //------------------------------------------------------------------------------
@@ -138,16 +143,42 @@ bool vtkGDALGridWriter::vtkFile::Create(const int whole[6], const std::vector<st
   }
   double gt[6];
   geo.GeoTransform(whole, gt);
-  GDALSetGeoTransform(this->Dataset, gt);
-  if (!geo.WKT.empty())
+  if (GDALSetGeoTransform(this->Dataset, gt) != CE_None ||
+    (!geo.WKT.empty() && GDALSetProjection(this->Dataset, geo.WKT.c_str()) != CE_None))
   {
-    GDALSetProjection(this->Dataset, geo.WKT.c_str());
+    error = "cannot georeference \"" + this->Name + "\": " + this->Session.LastError();
+    return false;
   }
   for (size_t b = 0; b < bands.size(); ++b)
   {
     GDALRasterBandH band = GDALGetRasterBand(this->Dataset, static_cast<int>(b) + 1);
     GDALSetDescription(band, bands[b].c_str());
     GDALSetRasterNoDataValue(band, std::numeric_limits<double>::quiet_NaN());
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkGDALGridWriter::vtkFile::Flush(bool close, std::string& error)
+{
+  CPLErrorReset();
+  if (close)
+  {
+    GDALClose(this->Dataset);
+    this->Dataset = nullptr;
+  }
+  else
+  {
+    GDALFlushCache(this->Dataset);
+  }
+  if (CPLGetLastErrorType() >= CE_Failure)
+  {
+    error = "cannot write \"" + this->Name + "\": " + this->Session.LastError();
+    if (close)
+    {
+      VSIUnlink(this->Name.c_str());
+    }
+    return false;
   }
   return true;
 }
@@ -269,9 +300,15 @@ int vtkGDALGridWriter::Write()
     return 0;
   }
   vtkAlgorithmOutput* connection = this->GetInputConnection(0, 0);
-  connection->GetProducer()->UpdateInformation();
-  vtkInformation* info = connection->GetProducer()->GetOutputInformation(connection->GetIndex());
-  int whole[6];
+  vtkAlgorithm* upstream = connection->GetProducer();
+  vtkInformation* info = upstream->GetOutputInformation(connection->GetIndex());
+  int whole[6] = { 0, -1, 0, -1, 0, -1 };
+  if (!upstream->GetExecutive()->UpdateInformation() ||
+    !info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+  {
+    vtkErrorMacro("The input has no extent (its reader failed?); nothing written.");
+    return 0;
+  }
   info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
   if (whole[4] != whole[5] || whole[1] < whole[0] || whole[3] < whole[2])
   {
@@ -295,17 +332,27 @@ int vtkGDALGridWriter::Write()
       const int tile[6] = { left, std::min(whole[1], left + columns - 1),
         std::max(whole[2], top - rows + 1), top, whole[4], whole[5] };
       vtkImageData* image = this->UpdateTile(tile);
+      std::string error;
       if (!image || (!file.Dataset && !this->CreateFile(file, image, whole, arrays)) ||
         !this->WriteTile(file, image, tile, whole, arrays, buffer))
       {
         return 0;
       }
       // Written blocks leave GDAL's cache, which would otherwise grow with the grid.
-      GDALFlushCache(file.Dataset);
+      if (!file.Flush(false, error))
+      {
+        vtkErrorMacro(<< error);
+        return 0;
+      }
       this->UpdateProgress(++done / tiles);
     }
   }
-  file.Keep();
+  std::string error;
+  if (!file.Flush(true, error))
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
   return 1;
 }
 
@@ -343,7 +390,15 @@ bool vtkGDALGridWriter::WriteTile(vtkFile& file, vtkImageData* image, const int 
   const int whole[6], const std::vector<std::string>& arrays, std::vector<float>& buffer)
 {
   const int nx = tile[1] - tile[0] + 1, rows = tile[3] - tile[2] + 1;
-  buffer.resize(static_cast<size_t>(nx) * rows);
+  try
+  {
+    buffer.resize(static_cast<size_t>(nx) * rows);
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorMacro("Cannot allocate a tile of " << nx << " x " << rows << " texels; set TileRows.");
+    return false;
+  }
   vtkDataArray* mask = image->GetPointData()->GetArray(vtkHorizonHeightField::ValidMaskName());
   int band = 0;
   for (const auto& name : arrays)

@@ -254,8 +254,7 @@ bool LoadHeightField(const std::string& name, const std::string& extension, cons
       return false;
     }
     image = raster->GetOutput();
-    const bool georeferenced = messages.Warnings().empty() ||
-      messages.Warnings()[0].find("not georeferenced") == std::string::npos;
+    const bool georeferenced = raster->GetGeoreferenced();
     if (options.Spacing > 0.0 || !georeferenced)
     {
       image->SetSpacing(spacing, spacing, 1.0);

@@ -139,12 +139,13 @@ View::View(const Options& options, const Input& input, vtkDataObject* apertures)
     auto* image = vtkImageData::SafeDownCast(apertures);
     int dims[3];
     image->GetDimensions(dims);
-    const int stride =
-      (std::max(dims[0], dims[1]) + options.MaximumGrid - 2) / std::max(1, options.MaximumGrid - 1);
+    // (The last row and column go when the stride does not divide the grid: vtkExtractVOI
+    // would place them a stride's multiple away, off the grid.)
+    const int gaps = std::max(dims[0], dims[1]) - 1, most = std::max(1, options.MaximumGrid - 1);
+    const int stride = std::max(1, (gaps + most - 1) / most);
     vtkNew<vtkExtractVOI> coarse;
     coarse->SetInputData(apertures);
     coarse->SetSampleRate(stride, stride, 1);
-    coarse->IncludeBoundaryOn();
     if (stride > 1)
     {
       this->Mapper->SetApertureImage(image);

@@ -22,11 +22,13 @@
 #include "vtkGDALDEMReader.h"
 #include "vtkGDALGridWriter.h"
 
+#include "vtkDataObject.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkNew.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -186,19 +188,24 @@ int main(int argc, char* argv[])
   {
     filter->SetMaximumDistance(o.MaximumDistance);
   }
+  // Tiles when the search radius leaves room for them (each tile reads its radius around it).
+  int whole[6];
+  reader->GetOutputInformation(0)->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
+  const double* spacing = reader->GetOutputInformation(0)->Get(vtkDataObject::SPACING());
+  const double side = std::max((whole[1] + 1) * spacing[0], (whole[3] + 1) * spacing[1]);
+  const int tile = o.MaximumDistance > 0.0 && o.MaximumDistance < side ? o.TileSize : 0;
   vtkNew<vtkGDALGridWriter> writer;
   writer->SetInputConnection(filter->GetOutputPort());
   writer->SetFileName(o.Output.c_str());
-  writer->SetTileRows(o.MaximumDistance > 0.0 ? o.TileSize : 0);
-  writer->SetTileColumns(o.MaximumDistance > 0.0 ? o.TileSize : 0);
+  writer->SetTileRows(tile);
+  writer->SetTileColumns(tile);
   writer->SetCompress(o.Compress);
 
   const auto start = std::chrono::steady_clock::now();
   int ok = 0;
   {
     // Tiles report through the writer; a whole DEM through the filter.
-    vtkAlgorithm* reporter =
-      writer->GetTileRows() > 0 ? static_cast<vtkAlgorithm*>(writer) : filter.Get();
+    vtkAlgorithm* reporter = tile > 0 ? static_cast<vtkAlgorithm*>(writer) : filter.Get();
     std::unique_ptr<ApertureRender::ProgressBar> bar(
       o.Quiet ? nullptr : new ApertureRender::ProgressBar(reporter, "Horizons"));
     ok = writer->Write();
@@ -209,8 +216,7 @@ int main(int argc, char* argv[])
   }
   if (!o.Quiet)
   {
-    int extent[6];
-    reader->GetOutputInformation(0)->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent);
+    const int* extent = whole;
     const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::cout << "Wrote " << o.Output << ": " << extent[1] + 1 << " x " << extent[3] + 1

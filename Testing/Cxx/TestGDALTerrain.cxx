@@ -67,6 +67,7 @@ struct FileSpec
   bool HasNoData = true;
   double NoData = -32768.0;
   double Scale = 1.0, Offset = 0.0;
+  bool Georeferenced = true;
 };
 
 // Writes a DEM with GDAL; texels with (column + 2 row) % 29 == 0 are no-data.
@@ -76,8 +77,11 @@ std::string WriteDEM(const std::string& name, const FileSpec& spec)
   GDALAllRegister();
   GDALDatasetH ds = GDALCreate(
     GDALGetDriverByName("GTiff"), path.c_str(), spec.Nx, spec.Ny, spec.Bands, spec.Type, nullptr);
-  GDALSetGeoTransform(ds, const_cast<double*>(spec.GeoTransform));
-  if (spec.EPSG)
+  if (spec.Georeferenced)
+  {
+    GDALSetGeoTransform(ds, const_cast<double*>(spec.GeoTransform));
+  }
+  if (spec.EPSG && spec.Georeferenced)
   {
     OGRSpatialReferenceH srs = OSRNewSpatialReference(nullptr);
     OSRImportFromEPSG(srs, spec.EPSG);
@@ -165,6 +169,27 @@ void TestProjected()
     vtkStringArray::SafeDownCast(image->GetFieldData()->GetAbstractArray("GroundSpacing"));
   Check(note && note->GetValue(0).find("projected") != std::string::npos, "projected: note");
   Check(!reader->GetGeographic(), "projected: not geographic");
+}
+
+// A raster without a geotransform: spacing 1, a warning, and its first row on top, as an image.
+void TestNotGeoreferenced()
+{
+  FileSpec spec;
+  spec.Georeferenced = false;
+  spec.Type = GDT_Float32;
+  vtkNew<vtkGDALDEMReader> reader;
+  reader->SetFileName(WriteDEM("plain.tif", spec).c_str());
+  vtkNew<vtkTest::ErrorObserver> warnings;
+  reader->AddObserver(vtkCommand::WarningEvent, warnings);
+  reader->Update();
+  vtkImageData* image = reader->GetOutput();
+  Check(!reader->GetGeoreferenced() && warnings->GetWarning(), "plain raster: a warning");
+  Check(image->GetSpacing()[0] == 1.0 && image->GetSpacing()[1] == 1.0, "plain raster: spacing 1");
+  vtkDataArray* z = image->GetPointData()->GetScalars();
+  const int i = 7, row = 2; // file row 2 from the top
+  const double got = z ? z->GetComponent(i + (spec.Ny - 1 - row) * spec.Nx, 0) : 0.0;
+  Check(got == std::round(Height(i, row)), "plain raster: the file's first row is the top", got,
+    std::round(Height(i, row)));
 }
 
 void TestTypesScaleAndVerticalScale()
@@ -259,6 +284,14 @@ void TestBadFiles()
   std::copy(absurd, absurd + 6, spec.GeoTransform);
   reader->SetFileName(WriteDEM("absurd.tif", spec).c_str());
   Check(FailsClearly(reader), "a spacing of a nanometre is an error");
+
+  // Found by fuzzing: PROJ loops for ever on a Web Mercator pixel of 1e40 m.
+  spec.EPSG = 3857;
+  const double huge[6] = { 500000.0, 1e40, 0.0, 3900000.0, 0.0, -30.0 };
+  std::copy(huge, huge + 6, spec.GeoTransform);
+  reader->SetFileName(WriteDEM("huge-pixels.tif", spec).c_str());
+  Check(FailsClearly(reader), "a Web Mercator pixel of 1e40 m is an error, at once");
+  spec.EPSG = 32654;
 
   // Truncated and damaged copies of a good file: an error or a read, never a crash.
   spec = FileSpec();
@@ -469,6 +502,7 @@ int TestGDALTerrain(int argc, char* argv[])
   Directory = temporary;
   delete[] temporary;
   TestProjected();
+  TestNotGeoreferenced();
   TestTypesScaleAndVerticalScale();
   TestGeographic();
   TestWebMercator();
