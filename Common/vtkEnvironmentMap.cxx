@@ -44,6 +44,18 @@ void Frame(int up, double north[3], double east[3], double zenith[3])
   }
 }
 
+// A bilinear sample of a latitude-longitude grid of w x h pixels at pixel coordinates (x, y),
+// pixel centres at integers, wrapping around in x and clamped in y; at(i, j) is pixel (i, j).
+template <typename At>
+double SampleLatLong(const At& at, int w, int h, double x, double y)
+{
+  const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
+  const double fx = x - x0, fy = y - y0;
+  auto pixel = [&](int i, int j) { return at(((i % w) + w) % w, std::min(h - 1, std::max(0, j))); };
+  return (1 - fy) * ((1 - fx) * pixel(x0, y0) + fx * pixel(x0 + 1, y0)) +
+    fy * ((1 - fx) * pixel(x0, y0 + 1) + fx * pixel(x0 + 1, y0 + 1));
+}
+
 // The nine real spherical harmonics of order 2 at a unit direction.
 void Harmonics(const double d[3], double y[9])
 {
@@ -232,16 +244,36 @@ void vtkEnvironmentMap::Update()
 //------------------------------------------------------------------------------
 void vtkEnvironmentMap::Rebuild()
 {
-  vtkDataArray* scalars = this->Image ? this->Image->GetPointData()->GetScalars() : nullptr;
   const int w = WorkingWidth, h = WorkingHeight;
   this->Working.assign(static_cast<size_t>(w) * h * 3, 0.0f);
-  this->RowSolidAngle.resize(h);
-  for (int j = 0; j < h; ++j)
-  {
-    this->RowSolidAngle[j] = (2.0 * Pi / w) *
-      (std::sin(Pi * ((j + 1.0) / h - 0.5)) - std::sin(Pi * (double(j) / h - 0.5)));
-  }
   std::fill(&this->SH[0][0], &this->SH[0][0] + 27, 0.0);
+  if (this->PixelDirections.empty())
+  {
+    this->RowSolidAngle.resize(h);
+    for (int j = 0; j < h; ++j)
+    {
+      this->RowSolidAngle[j] = (2.0 * Pi / w) *
+        (std::sin(Pi * ((j + 1.0) / h - 0.5)) - std::sin(Pi * (double(j) / h - 0.5)));
+    }
+    this->PixelDirections.resize(static_cast<size_t>(w) * h * 3);
+    for (int p = 0; p < w * h; ++p)
+    {
+      Local((p % w + 0.5) / w, (p / w + 0.5) / h, &this->PixelDirections[3 * p]);
+    }
+  }
+  if (this->Resample())
+  {
+    this->Blur();
+    this->ProjectHarmonics();
+  }
+}
+
+//------------------------------------------------------------------------------
+// The mean of the input pixels whose centres fall in each working pixel (weighted by their rows'
+// solid angles), or a bilinear sample where the input is the coarser. False without an image.
+bool vtkEnvironmentMap::Resample()
+{
+  vtkDataArray* scalars = this->Image ? this->Image->GetPointData()->GetScalars() : nullptr;
   int dims[3] = { 0, 0, 0 };
   if (this->Image)
   {
@@ -249,17 +281,9 @@ void vtkEnvironmentMap::Rebuild()
   }
   if (!scalars || dims[0] < 1 || dims[1] < 1 || scalars->GetNumberOfTuples() < dims[0] * dims[1])
   {
-    return;
+    return false;
   }
-  const int components = scalars->GetNumberOfComponents();
-  auto value = [&](int i, int j, int k)
-  {
-    const vtkIdType id = static_cast<vtkIdType>(j) * dims[0] + i;
-    return scalars->GetComponent(id, components >= 3 ? k : 0);
-  };
-
-  // Resample: the mean of the input pixels whose centres fall in each working pixel (weighted by
-  // their rows' solid angles), or a bilinear sample where the input is the coarser.
+  const int w = WorkingWidth, h = WorkingHeight, components = scalars->GetNumberOfComponents();
   std::vector<double> sums(this->Working.size(), 0.0), weights(static_cast<size_t>(w) * h, 0.0);
   if (dims[0] >= w && dims[1] >= h)
   {
@@ -271,115 +295,104 @@ void vtkEnvironmentMap::Rebuild()
       {
         const int column = std::min(w - 1, static_cast<int>((i + 0.5) / dims[0] * w));
         const size_t p = static_cast<size_t>(row) * w + column;
+        const vtkIdType id = static_cast<vtkIdType>(j) * dims[0] + i;
         for (int k = 0; k < 3; ++k)
         {
-          sums[3 * p + k] += weight * value(i, j, k);
+          sums[3 * p + k] += weight * scalars->GetComponent(id, components >= 3 ? k : 0);
         }
         weights[p] += weight;
       }
     }
   }
-  for (int row = 0; row < h; ++row)
+  for (size_t p = 0; p < weights.size(); ++p)
   {
-    for (int column = 0; column < w; ++column)
+    const double x = (p % w + 0.5) / w * dims[0] - 0.5, y = (p / w + 0.5) / h * dims[1] - 0.5;
+    for (int k = 0; k < 3; ++k)
     {
-      const size_t p = static_cast<size_t>(row) * w + column;
-      for (int k = 0; k < 3; ++k)
-      {
-        if (weights[p] > 0.0)
-        {
-          this->Working[3 * p + k] = static_cast<float>(sums[3 * p + k] / weights[p]);
-          continue;
-        }
-        // Bilinear, wrapping in u, clamped in v.
-        const double x = (column + 0.5) / w * dims[0] - 0.5, y = (row + 0.5) / h * dims[1] - 0.5;
-        const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
-        const double fx = x - x0, fy = y - y0;
-        auto at = [&](int i, int j) {
-          return value(
-            ((i % dims[0]) + dims[0]) % dims[0], std::min(dims[1] - 1, std::max(0, j)), k);
-        };
-        this->Working[3 * p + k] =
-          static_cast<float>((1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) +
-            fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1)));
-      }
+      auto input = [&](int i, int j) {
+        return scalars->GetComponent(
+          static_cast<vtkIdType>(j) * dims[0] + i, components >= 3 ? k : 0);
+      };
+      this->Working[3 * p + k] =
+        static_cast<float>(weights[p] > 0.0 ? sums[3 * p + k] / weights[p]
+                                            : SampleLatLong(input, dims[0], dims[1], x, y));
     }
   }
+  return true;
+}
 
-  // The Gaussian blur on the sphere: a von Mises-Fisher kernel exp(kappa (cos t - 1)),
-  // kappa = 1/sigma^2, which is exp(-t^2 / 2 sigma^2) for small angles t, summed over the true
-  // angles between pixel directions (so the poles and the seam need nothing special); rows and
-  // columns beyond 4 sigma contribute nothing measurable and are skipped.
-  std::vector<double> directions(static_cast<size_t>(w) * h * 3);
-  for (int row = 0; row < h; ++row)
+//------------------------------------------------------------------------------
+// The Gaussian blur on the sphere: a von Mises-Fisher kernel exp(kappa (cos t - 1)),
+// kappa = 1/sigma^2, which is exp(-t^2 / 2 sigma^2) for small angles t, summed over the true
+// angles between pixel directions (so the poles and the seam need nothing special); rows and
+// columns beyond 4 sigma contribute nothing measurable and are skipped.
+void vtkEnvironmentMap::Blur()
+{
+  if (!(this->BlurAngle > 0.0))
   {
-    for (int column = 0; column < w; ++column)
-    {
-      Local((column + 0.5) / w, (row + 0.5) / h, &directions[3 * (row * w + column)]);
-    }
+    return;
   }
-  if (this->BlurAngle > 0.0)
-  {
-    const double sigma = this->BlurAngle, kappa = 1.0 / (sigma * sigma);
-    const std::vector<float> sharp = this->Working;
-    const int band = static_cast<int>(std::ceil(4.0 * sigma / (Pi / h)));
-    vtkSMPTools::For(0, h,
-      [&](vtkIdType first, vtkIdType last)
+  const int w = WorkingWidth, h = WorkingHeight;
+  const double sigma = this->BlurAngle, kappa = 1.0 / (sigma * sigma);
+  const std::vector<float> sharp = this->Working;
+  const double* directions = this->PixelDirections.data();
+  const int band = static_cast<int>(std::ceil(4.0 * sigma / (Pi / h)));
+  vtkSMPTools::For(0, h,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (int row = static_cast<int>(first); row < last; ++row)
       {
-        for (int row = static_cast<int>(first); row < last; ++row)
+        // Two directions dphi apart in azimuth are at least dphi cos(theta) apart, theta the
+        // band's latitude farthest from the equator: the columns beyond 4 sigma of that are
+        // skipped, and all are kept when the band reaches a pole.
+        const double theta = Pi * ((row + 0.5) / h - 0.5);
+        const double far = std::min(0.5 * Pi, std::abs(theta) + 4.0 * sigma + Pi / h);
+        const double reach =
+          far < 0.5 * Pi - 1e-9 ? std::min(Pi, 4.0 * sigma / std::cos(far) + Pi / w) : Pi;
+        // Columns on either side that can be within reach (all of them near the poles).
+        const int columns = static_cast<int>(std::ceil(reach / (2 * Pi / w)));
+        const int from = columns >= w / 2 ? 0 : -columns, to = columns >= w / 2 ? w - 1 : columns;
+        for (int column = 0; column < w; ++column)
         {
-          // Two directions dphi apart in azimuth are at least dphi cos(theta) apart, theta the
-          // band's latitude farthest from the equator: the columns beyond 4 sigma of that are
-          // skipped, and all are kept when the band reaches a pole.
-          const double theta = Pi * ((row + 0.5) / h - 0.5);
-          const double far = std::min(0.5 * Pi, std::abs(theta) + 4.0 * sigma + Pi / h);
-          const double reach =
-            far < 0.5 * Pi - 1e-9 ? std::min(Pi, 4.0 * sigma / std::cos(far) + Pi / w) : Pi;
-          // Columns on either side that can be within reach (all of them near the poles).
-          const int columns = static_cast<int>(std::ceil(reach / (2 * Pi / w)));
-          const int from = columns >= w / 2 ? 0 : -columns, to = columns >= w / 2 ? w - 1 : columns;
-          for (int column = 0; column < w; ++column)
+          const double* d = &directions[3 * (row * w + column)];
+          double sum[3] = { 0, 0, 0 }, total = 0.0;
+          for (int r = std::max(0, row - band); r <= std::min(h - 1, row + band); ++r)
           {
-            const double* d = &directions[3 * (row * w + column)];
-            double sum[3] = { 0, 0, 0 }, total = 0.0;
-            for (int r = std::max(0, row - band); r <= std::min(h - 1, row + band); ++r)
+            for (int dc = from; dc <= to; ++dc)
             {
-              for (int dc = from; dc <= to; ++dc)
+              const size_t p = static_cast<size_t>(r) * w + ((column + dc) % w + w) % w;
+              const double weight = this->RowSolidAngle[r] *
+                std::exp(kappa * (vtkMath::Dot(d, &directions[3 * p]) - 1.0));
+              for (int k = 0; k < 3; ++k)
               {
-                const int c = ((column + dc) % w + w) % w;
-                const size_t p = static_cast<size_t>(r) * w + c;
-                const double weight = this->RowSolidAngle[r] *
-                  std::exp(kappa * (vtkMath::Dot(d, &directions[3 * p]) - 1.0));
-                for (int k = 0; k < 3; ++k)
-                {
-                  sum[k] += weight * sharp[3 * p + k];
-                }
-                total += weight;
+                sum[k] += weight * sharp[3 * p + k];
               }
-            }
-            for (int k = 0; k < 3; ++k)
-            {
-              this->Working[3 * (row * w + column) + k] = static_cast<float>(sum[k] / total);
+              total += weight;
             }
           }
+          for (int k = 0; k < 3; ++k)
+          {
+            this->Working[3 * (row * w + column) + k] = static_cast<float>(sum[k] / total);
+          }
         }
-      });
-  }
+      }
+    });
+}
 
-  // Order-2 spherical harmonics of the (blurred) environment, in its own frame.
-  for (int row = 0; row < h; ++row)
+//------------------------------------------------------------------------------
+// Order-2 spherical harmonics of the (blurred) environment, in its own frame.
+void vtkEnvironmentMap::ProjectHarmonics()
+{
+  const int w = WorkingWidth, h = WorkingHeight;
+  for (int p = 0; p < w * h; ++p)
   {
-    for (int column = 0; column < w; ++column)
+    double y[9];
+    Harmonics(&this->PixelDirections[3 * p], y);
+    for (int n = 0; n < 9; ++n)
     {
-      const size_t p = static_cast<size_t>(row) * w + column;
-      double y[9];
-      Harmonics(&directions[3 * p], y);
-      for (int n = 0; n < 9; ++n)
+      for (int k = 0; k < 3; ++k)
       {
-        for (int k = 0; k < 3; ++k)
-        {
-          this->SH[n][k] += y[n] * this->Working[3 * p + k] * this->RowSolidAngle[row];
-        }
+        this->SH[n][k] += y[n] * this->Working[3 * p + k] * this->RowSolidAngle[p / w];
       }
     }
   }
@@ -397,19 +410,11 @@ void vtkEnvironmentMap::Radiance(const double direction[3], double rgb[3])
   double u, v;
   this->ImagePointOf(direction, u, v);
   const int w = WorkingWidth, h = WorkingHeight;
-  const double x = u * w - 0.5, y = v * h - 0.5;
-  const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
-  const double fx = x - x0, fy = y - y0;
   for (int k = 0; k < 3; ++k)
   {
-    auto at = [&](int i, int j)
-    {
-      return this->Working[3 *
-          (static_cast<size_t>(std::min(h - 1, std::max(0, j))) * w + ((i % w) + w) % w) +
-        k];
-    };
-    rgb[k] = (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) +
-      fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
+    auto working = [&](int i, int j)
+    { return this->Working[3 * (static_cast<size_t>(j) * w + i) + k]; };
+    rgb[k] = SampleLatLong(working, w, h, u * w - 0.5, v * h - 0.5);
   }
 }
 
@@ -441,8 +446,7 @@ void vtkEnvironmentMap::CellRadiance(vtkDoubleArray* directions, vtkDoubleArray*
     {
       for (vtkIdType p = first; p < last; ++p)
       {
-        double d[3];
-        Local((p % w + 0.5) / w, (p / w + 0.5) / h, d);
+        const double* d = &this->PixelDirections[3 * p];
         double best = -2.0;
         for (vtkIdType j = 0; j < k; ++j)
         {

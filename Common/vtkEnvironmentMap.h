@@ -173,6 +173,11 @@ protected:
   // several threads at once: the queries below are, as long as nobody changes the image meanwhile.
   void Update();
   void Rebuild();
+  // Rebuild()'s steps: the image resampled to the working grid (false without an image), the
+  // blur, and the spherical harmonics.
+  bool Resample();
+  void Blur();
+  void ProjectHarmonics();
 
   vtkImageData* Image = nullptr;
   int UpAxis = Z;
@@ -192,9 +197,11 @@ private:
   void ToWorld(const double local[3], double world[3]);
   void ToLocal(const double world[3], double local[3]);
 
-  // The working image: 256 x 128 RGB, solid angles per row, and the SH-9 irradiance coefficients.
+  // The working image: 256 x 128 RGB, solid angles per row, the direction of each pixel (in the
+  // environment's frame), and the SH-9 irradiance coefficients.
   std::vector<float> Working;
   std::vector<double> RowSolidAngle;
+  std::vector<double> PixelDirections;
   double SH[9][3];
   vtkTimeStamp FilterTime;                    // the image or the blur set
   std::atomic<vtkMTimeType> WorkingTime{ 0 }; // 0 until the first update
