@@ -555,6 +555,13 @@ double vtkSphericalCap::ClampLightRadius(double radius)
 }
 
 //------------------------------------------------------------------------------
+double vtkSphericalCap::LightRadiance(double rl)
+{
+  const double s = std::sin(ClampLightRadius(rl));
+  return 1.0 / (Pi * s * s);
+}
+
+//------------------------------------------------------------------------------
 std::string vtkSphericalCap::GetGLSLConstants()
 {
   std::ostringstream glsl;

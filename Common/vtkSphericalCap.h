@@ -156,6 +156,13 @@ public:
   static double ClampLightRadius(double radius);
 
   /**
+   * Radiance of a light of angular radius rl (clamped by ClampLightRadius()) and intensity 1:
+   * 1/(π sin²rl), so that the unoccluded light at normal incidence gives an irradiance of 1.
+   * LightTransfer() and the references use it; the shaders compute the same from half angles.
+   */
+  static double LightRadiance(double rl);
+
+  /**
    * The GLSL declarations of this class's constants, which the GLSL twin needs before its own
    * source: the Shading and Lambert values (sphericalCapExact, ..., sphericalCapMoment) and the
    * light-radius bounds (sphericalCapMinimumLightRadius, sphericalCapMaximumLightRadius). Shaders

@@ -37,7 +37,6 @@ vtkCxxSetObjectMacro(vtkApertureReference, Environment, vtkEnvironmentMap);
 
 namespace
 {
-constexpr double Pi = vtkMath::Pi();
 constexpr int Lanes = vtkApertureRayPacket::Lanes;
 // Points handled between two progress events.
 constexpr vtkIdType Batch = 4096;
@@ -58,9 +57,9 @@ public:
     std::copy(light, light + 3, this->Light);
     this->Source = self->GetSource();
     const double r = vtkSphericalCap::ClampLightRadius(self->GetLightRadius());
-    // Cap solid angle over π sin² r: the light's radiance times the cap.
+    // The light's radiance times the cap's solid angle.
     this->LightScale =
-      vtkSphericalCap::SolidAngleFromCapRadius(r) / (Pi * std::sin(r) * std::sin(r));
+      vtkSphericalCap::SolidAngleFromCapRadius(r) * vtkSphericalCap::LightRadiance(r);
     this->Components = this->Source == vtkApertureReference::ENVIRONMENT ? 3 : 1;
   }
 

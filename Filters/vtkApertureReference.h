@@ -49,6 +49,7 @@
 
 #include "vtkApertureLightingModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
+#include "vtkSphericalCap.h" // For the light-radius bounds
 
 class vtkEnvironmentMap;
 
@@ -85,11 +86,13 @@ public:
   ///@{
   /**
    * The light: the world direction toward its centre (need not be unit) and its angular radius
-   * in radians, from 1e-4 to π/2. Defaults (0, 0, 1) and 0.0047, the sun.
+   * in radians, from vtkSphericalCap::MinimumLightRadius (1e-4) to MaximumLightRadius (π/2).
+   * Defaults (0, 0, 1) and 0.0047, the sun.
    */
   vtkSetVector3Macro(LightDirection, double);
   vtkGetVector3Macro(LightDirection, double);
-  vtkSetClampMacro(LightRadius, double, 1e-4, 1.5707963267948966);
+  vtkSetClampMacro(
+    LightRadius, double, vtkSphericalCap::MinimumLightRadius, vtkSphericalCap::MaximumLightRadius);
   vtkGetMacro(LightRadius, double);
   ///@}
 

@@ -208,7 +208,7 @@ class Scene:
             return np.array([transfer(shading, lambert, n, b, r, d, radius)
                              for n, b, r in zip(self.normals.tolist(), self.bent.tolist(),
                                                 self.radius.tolist())])
-        scale = 1.0 / (math.pi * math.sin(radius) ** 2)
+        scale = vtkSphericalCap.LightRadiance(radius)
         if name == "SH PRT order 6":
             # Funk-Hecke: the cap's projection on band l is 2 pi int_{cos r}^1 P_l, so the
             # order-6 product of light and transfer is sum_j M_ij w_j K(d . l_j).
