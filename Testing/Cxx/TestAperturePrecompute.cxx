@@ -14,6 +14,7 @@
 // input, MaximumDistance, huge coordinates, kept arrays, progress and abort.
 
 #include "vtkAperturePrecompute.h"
+#include "vtkApertureTestHarness.h"
 #include "vtkSphericalCap.h"
 
 #include "vtkAppendPolyData.h"
@@ -44,16 +45,7 @@
 namespace
 {
 constexpr double Pi = vtkMath::Pi();
-int Failures = 0;
-
-void Check(bool ok, const std::string& what, double got, double want)
-{
-  if (!ok)
-  {
-    ++Failures;
-    std::cerr << "FAIL " << what << ": got " << got << ", want " << want << "\n";
-  }
-}
+using vtkApertureTest::Check;
 
 // A rectangle in the plane through `corner` spanned by u and v, split into nu x nv quads, with
 // the given point normal.
@@ -461,10 +453,5 @@ int TestAperturePrecompute(int, char*[])
   TestOccludersAndComposite();
   TestMaximumDistance();
   TestPipelineBehaviour();
-  if (Failures)
-  {
-    std::cerr << Failures << " check(s) failed\n";
-    return EXIT_FAILURE;
-  }
-  return EXIT_SUCCESS;
+  return vtkApertureTest::Result();
 }

@@ -12,6 +12,7 @@
 // a warning with defined results, never a crash, and leaves the input as it was.
 
 #include "vtkAperturePrecompute.h"
+#include "vtkApertureTestHarness.h"
 
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
@@ -37,16 +38,7 @@
 namespace
 {
 constexpr double Pi = vtkMath::Pi();
-int Failures = 0;
-
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    ++Failures;
-    std::cerr << "FAIL " << what << "\n";
-  }
-}
+using vtkApertureTest::Check;
 
 // Runs the filter with observers on it and its executive; returns whether Update succeeded.
 struct Run
@@ -325,10 +317,5 @@ int TestAperturePrecomputeBadInput(int, char*[])
   TestErrors();
   TestWarnings();
   TestClamping();
-  if (Failures)
-  {
-    std::cerr << Failures << " check(s) failed\n";
-    return EXIT_FAILURE;
-  }
-  return EXIT_SUCCESS;
+  return vtkApertureTest::Result();
 }

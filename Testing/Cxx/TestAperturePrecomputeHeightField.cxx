@@ -13,6 +13,7 @@
 // least as fast as 1/sqrt(N); stratified sampling beats random sampling at equal ray counts.
 
 #include "vtkAperturePrecompute.h"
+#include "vtkApertureTestHarness.h"
 #include "vtkSphericalCap.h"
 #include "vtkTerrainRGBReader.h"
 
@@ -34,16 +35,7 @@
 
 namespace
 {
-int Failures = 0;
-
-void Check(bool ok, const char* what, double got, double want)
-{
-  if (!ok)
-  {
-    ++Failures;
-    std::cerr << "FAIL " << what << ": got " << got << ", want " << want << "\n";
-  }
-}
+using vtkApertureTest::Check;
 
 // The tile is about 60 m per pixel; every `step`-th pixel is kept.
 vtkSmartPointer<vtkImageData> Fuji(const char* file, int step)
@@ -266,10 +258,5 @@ int TestAperturePrecomputeHeightField(int argc, char* argv[])
   TestConvergence(file);
   TestHorizonsMatchRays(file);
   delete[] file;
-  if (Failures)
-  {
-    std::cerr << Failures << " check(s) failed\n";
-    return EXIT_FAILURE;
-  }
-  return EXIT_SUCCESS;
+  return vtkApertureTest::Result();
 }

@@ -22,6 +22,7 @@
 
 #include "vtkAperturePrecompute.h"
 #include "vtkApertureReference.h"
+#include "vtkApertureTestHarness.h"
 #include "vtkEnvironmentMap.h"
 
 #include "vtkCellArray.h"
@@ -47,13 +48,7 @@
 
 namespace
 {
-int Failures = 0;
-
-void Check(bool ok, const std::string& what)
-{
-  std::cout << (ok ? "ok   " : "FAIL ") << what << "\n";
-  Failures += ok ? 0 : 1;
-}
+using vtkApertureTest::Check;
 
 vtkDataArray* Irradiance(vtkApertureReference* reference)
 {
@@ -269,5 +264,5 @@ int TestApertureReference(int argc, char* argv[])
   noEnvironment->SetInputData(plane);
   noEnvironment->SetSourceToEnvironment();
   expect(noEnvironment, "needs an environment", "the environment source without one");
-  return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return vtkApertureTest::Result();
 }

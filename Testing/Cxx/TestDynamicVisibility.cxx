@@ -19,6 +19,7 @@
 //   and recomputes; the adaptive level follows TargetUpdateTime; the interactor style's events
 //   mark interaction; the prop's rotation reaches the lighting.
 
+#include "vtkApertureTestHarness.h"
 #include "vtkDynamicVisibilityDriver.h"
 #include "vtkEnvironmentVisibilityLighting.h"
 #include "vtkOcclusionQueryVisibility.h"
@@ -56,16 +57,7 @@
 
 namespace
 {
-int Failures = 0;
-
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAIL " << what << "\n";
-    ++Failures;
-  }
-}
+using vtkApertureTest::Check;
 
 // A latitude-longitude environment: a sky brighter toward the zenith (+z) and a bright lobe low
 // in the north-east, so that turning it matters.
@@ -397,5 +389,5 @@ int TestDynamicVisibility(int argc, char* argv[])
   idle->Attach(nullptr);
   Check(errors->GetError() && errors->GetErrorMessage().find("renderer") != std::string::npos,
     "attaching to no renderer says so");
-  return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return vtkApertureTest::Result();
 }

@@ -15,6 +15,7 @@
 // averages that add up to the environment's total, turning the environment against turning the
 // directions, and the cap table against CapIrradiance().
 
+#include "vtkApertureTestHarness.h"
 #include "vtkEnvironmentMap.h"
 
 #include "vtkDoubleArray.h"
@@ -37,17 +38,9 @@
 
 namespace
 {
-int Failures = 0;
 const double Pi = vtkMath::Pi();
 
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAIL " << what << "\n";
-    ++Failures;
-  }
-}
+using vtkApertureTest::Check;
 
 // A w x h RGB map, 0 except `value` at pixel (i, j) and its right and upper neighbours.
 vtkSmartPointer<vtkImageData> Spot(int w, int h, int i, int j, double value = 1000.0)
@@ -380,5 +373,5 @@ int TestEnvironmentMap(int argc, char* argv[])
     Check(expected == got && a[0] == b[0] && a[1] == b[1] && a[2] == b[2],
       "queries from several threads on a fresh map");
   }
-  return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return vtkApertureTest::Result();
 }

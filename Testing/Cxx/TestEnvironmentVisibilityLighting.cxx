@@ -16,6 +16,7 @@
 //   a quarter turn does; exposure and gamma act on the colours only;
 // - the output keeps the input's arrays; bad input is an error.
 
+#include "vtkApertureTestHarness.h"
 #include "vtkEnvironmentVisibilityLighting.h"
 
 #include "vtkCommand.h"
@@ -42,16 +43,7 @@
 
 namespace
 {
-int Failures = 0;
-
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAIL " << what << "\n";
-    ++Failures;
-  }
-}
+using vtkApertureTest::Check;
 
 vtkSmartPointer<vtkImageData> Uniform(int w, int h, double value)
 {
@@ -234,5 +226,5 @@ int TestEnvironmentVisibilityLighting(int argc, char* argv[])
   expect(noValues, Uniform(64, 32, 1.0), "no visibility", "no visibility array");
   expect(visibility->GetOutput(), nullptr, "No environment", "no environment");
   expect(visibility->GetOutput(), Uniform(50, 50, 1.0), "not 2:1", "a square environment");
-  return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return vtkApertureTest::Result();
 }

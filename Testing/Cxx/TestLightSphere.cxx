@@ -13,6 +13,7 @@
 // directions, and integrals over the sphere that the weights get right where equal weights do
 // not.
 
+#include "vtkApertureTestHarness.h"
 #include "vtkLightSphere.h"
 
 #include "vtkDoubleArray.h"
@@ -29,16 +30,7 @@
 
 namespace
 {
-int Failures = 0;
-
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAIL " << what << "\n";
-    ++Failures;
-  }
-}
+using vtkApertureTest::Check;
 
 struct Sphere
 {
@@ -183,5 +175,5 @@ int TestLightSphere(int, char*[])
   Check(!sphere->GetDirection(1026, d) && !sphere->GetDirection(-1, d) &&
       sphere->GetWeight(1026) == 0.0,
     "out-of-range directions are refused");
-  return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return vtkApertureTest::Result();
 }

@@ -20,6 +20,7 @@
 // - sharing a render window leaves its GL state as it was: the same picture before and after;
 // - progress events, abort, and bad input.
 
+#include "vtkApertureTestHarness.h"
 #include "vtkOcclusionQueryVisibility.h"
 
 #include "vtkActor.h"
@@ -61,16 +62,7 @@
 
 namespace
 {
-int Failures = 0;
-
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAIL " << what << "\n";
-    ++Failures;
-  }
-}
+using vtkApertureTest::Check;
 
 const int Backends[] = { vtkOcclusionQueryVisibility::OCCLUSION_QUERY,
   vtkOcclusionQueryVisibility::DEPTH_COMPARE, vtkOcclusionQueryVisibility::RAY_CAST };
@@ -488,5 +480,5 @@ int TestOcclusionQueryVisibility(int argc, char* argv[])
   vertices->InsertNextCell({ 1 });
   cloud->SetVerts(vertices);
   expectError(cloud, "polygons", "points without polygons");
-  return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return vtkApertureTest::Result();
 }

@@ -15,6 +15,7 @@
 // absurd tiles, no colour channel, and a few hundred randomly damaged files, none of which may
 // crash the reader.
 
+#include "vtkApertureTestHarness.h"
 #include "vtkOpenEXRReader.h"
 
 #include "vtkCommand.h"
@@ -47,16 +48,7 @@
 
 namespace
 {
-int Failures = 0;
-
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAIL " << what << "\n";
-    ++Failures;
-  }
-}
+using vtkApertureTest::Check;
 
 // A smooth, asymmetric test value of channel k at file pixel (x, y) (row 0 at the top).
 float Value(int x, int y, int k)
@@ -401,5 +393,5 @@ int TestOpenEXRReader(int argc, char* argv[])
   }
   std::cout << "300 damaged files: " << refused << " refused with an error, " << readable
             << " read\n";
-  return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return vtkApertureTest::Result();
 }

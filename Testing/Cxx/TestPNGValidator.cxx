@@ -14,6 +14,7 @@
 // (so that only the compressed data are wrong). Whatever the validator accepts is handed to
 // vtkPNGReader, which crashes on any libpng error: the test passing is the guarantee.
 
+#include "vtkApertureTestHarness.h"
 #include "vtkPNGValidator.h"
 
 #include "vtkDataArray.h"
@@ -31,16 +32,7 @@
 
 namespace
 {
-int Failures = 0;
-
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAIL " << what << "\n";
-    ++Failures;
-  }
-}
+using vtkApertureTest::Check;
 
 using Bytes = std::vector<unsigned char>;
 
@@ -328,5 +320,5 @@ int TestPNGValidator(int, char*[])
   Check(!vtkPNGValidator::CheckFile("/no/such/file.png").empty(), "a missing file is refused");
   Check(!vtkPNGValidator::CheckFile(nullptr).empty(), "no file name is refused");
   Check(!vtkPNGValidator::CheckBuffer(nullptr, 100).empty(), "a null buffer is refused");
-  return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return vtkApertureTest::Result();
 }

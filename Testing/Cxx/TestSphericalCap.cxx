@@ -12,6 +12,7 @@
 // r1, r2 in (0, pi/2] and distances d in [0, pi], plus the edge cases and the bad-input policy.
 // It also measures the smoothstep approximation's error envelope and prints it.
 
+#include "vtkApertureTestHarness.h"
 #include "vtkMath.h"
 #include "vtkSphericalCap.h"
 
@@ -19,23 +20,22 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <sstream>
 #include <vector>
 
 namespace
 {
 constexpr double Pi = vtkMath::Pi();
-int Failures = 0;
+using vtkApertureTest::Check;
 
+// The harness's Check with the radii and distance of the case in its message.
 void Check(bool ok, const char* what, double r1, double r2, double d, double got, double want)
 {
   if (!ok)
   {
-    ++Failures;
-    if (Failures < 20)
-    {
-      std::cerr << "FAIL " << what << " r1=" << r1 << " r2=" << r2 << " d=" << d << ": got " << got
-                << ", want " << want << "\n";
-    }
+    std::ostringstream message;
+    message << what << " r1=" << r1 << " r2=" << r2 << " d=" << d;
+    vtkApertureTest::Check(ok, message.str(), got, want);
   }
 }
 
@@ -652,10 +652,5 @@ int TestSphericalCap(int, char*[])
   TestEdgeCases();
   TestRotation();
   TestShading();
-  if (Failures > 0)
-  {
-    std::cerr << Failures << " check(s) failed\n";
-    return EXIT_FAILURE;
-  }
-  return EXIT_SUCCESS;
+  return vtkApertureTest::Result();
 }

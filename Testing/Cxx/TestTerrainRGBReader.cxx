@@ -12,6 +12,7 @@
 // against reading the file, and damaged input (missing, not a PNG, truncated, grey) failing with
 // one error instead of a crash.
 
+#include "vtkApertureTestHarness.h"
 #include "vtkTerrainRGBReader.h"
 
 #include "vtkCommand.h"
@@ -34,16 +35,7 @@
 
 namespace
 {
-int Failures = 0;
-
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAIL " << what << "\n";
-    ++Failures;
-  }
-}
+using vtkApertureTest::Check;
 
 std::vector<char> ReadBytes(const std::string& name)
 {
@@ -171,5 +163,5 @@ int TestTerrainRGBReader(int argc, char* argv[])
   bad->SetFileName(fuji.c_str());
   bad->Update();
   Check(bad->GetOutput()->GetNumberOfPoints() == 512 * 512, "a failed reader recovers");
-  return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return vtkApertureTest::Result();
 }

@@ -22,6 +22,7 @@
 //   10^5), so OcclusionQuery is held to 1 entry in 2000;
 // - raising the level afterwards renders only the new directions and again equals a full one.
 
+#include "vtkApertureTestHarness.h"
 #include "vtkOcclusionQueryVisibility.h"
 
 #include "vtkCamera.h"
@@ -52,16 +53,7 @@
 
 namespace
 {
-int Failures = 0;
-
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAIL " << what << "\n";
-    ++Failures;
-  }
-}
+using vtkApertureTest::Check;
 
 // Camera on a sphere of `distance` around `centre`, at azimuth and elevation in degrees.
 void Place(
@@ -366,5 +358,5 @@ int TestVertexFiltering(int argc, char* argv[])
       errors->GetErrorMessage().find("SetViewRenderer") != std::string::npos &&
       lost->GetOutput()->GetNumberOfPoints() == 0,
     "filtering without a camera fails cleanly");
-  return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return vtkApertureTest::Result();
 }
