@@ -11,6 +11,7 @@
 /**
  * @class   vtkPNGValidator
  * @brief   tells whether a PNG file or buffer decodes cleanly, before vtkPNGReader reads it
+ *          (private: a workaround for VTK 9.1)
  *
  * VTK 9.1's vtkPNGReader cannot recover from an error inside libpng: a truncated or damaged PNG
  * crashes the program. This class checks a PNG completely without libpng: the signature, every
@@ -59,3 +60,4 @@ private:
 };
 
 #endif
+// VTK-HeaderTest-Exclude: vtkPNGValidator.h

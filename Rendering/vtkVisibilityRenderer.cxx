@@ -10,6 +10,14 @@
 =========================================================================*/
 #include "vtkVisibilityRenderer.h"
 
+#include "vtkVisibilityCameraFS.h"
+#include "vtkVisibilityCompareFS.h"
+#include "vtkVisibilityCompareVS.h"
+#include "vtkVisibilityDepthFS.h"
+#include "vtkVisibilityDepthVS.h"
+#include "vtkVisibilityMatrixVS.h"
+#include "vtkVisibilityPairFS.h"
+
 #include "vtkNew.h"
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -18,6 +26,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkShaderProgram.h"
+#include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
@@ -31,114 +40,6 @@ namespace
 constexpr int QueryBatch = 16384;
 // Directions whose bits share the storage buffer before it is read back.
 constexpr int CompareBatch = 64;
-
-const char* const DepthVS = R"(//VTK::System::Dec
-in vec3 vertexMC;
-uniform mat4 lightMatrix;
-void main()
-{
-  gl_Position = lightMatrix * vec4(vertexMC, 1.0);
-}
-)";
-
-// Depth only: nothing to shade.
-const char* const DepthFS = R"(//VTK::System::Dec
-void main()
-{
-}
-)";
-
-// Points placed by one matrix, for the passes that need GLSL 4.30 fragment shaders: DepthCompare's
-// paired depth pass and the camera pass.
-const char* const MatrixVS = R"(#version 430 core
-in vec3 vertexMC;
-uniform mat4 clipMatrix;
-void main()
-{
-  gl_Position = clipMatrix * vec4(vertexMC, 1.0);
-}
-)";
-
-// DepthCompare's depth pass, for a direction and its opposite at once: the nearest and the
-// farthest surface in each texel (blending with GL_MIN and GL_MAX), each pushed away from its
-// light by the offset glPolygonOffset(factor, units) gives a depth pass.
-
-const char* const PairFS = R"(#version 430 core
-uniform float offsetFactor;
-uniform float offsetUnits;
-layout(location = 0) out float nearest;
-layout(location = 1) out float farthest;
-void main()
-{
-  // The polygon's largest depth slope and the resolution of a 32-bit float depth near z, as
-  // glPolygonOffset takes them.
-  float z = gl_FragCoord.z;
-  float slope = max(abs(dFdx(z)), abs(dFdy(z)));
-  float resolution = exp2(floor(log2(max(z, 1e-30))) - 23.0);
-  float offset = offsetFactor * slope + offsetUnits * resolution;
-  nearest = z + offset;
-  farthest = z - offset;
-}
-)";
-
-// The depth test of the occlusion-query pass, in a vertex shader: the point's window depth
-// against the texel it rasterises to, nearer than the nearest surface for the direction (the
-// GL_LESS test), farther than the farthest for its opposite, seen from the same side (the
-// opposite direction's orthographic view is this one mirrored, on the same texel centres).
-const char* const CompareVS = R"(#version 430 core
-in vec3 vertexMC;
-uniform mat4 lightMatrix;
-uniform sampler2D nearestMap;
-uniform sampler2D farthestMap;
-uniform int resolution;
-uniform int slot;
-uniform int opposite;
-uniform int words;
-layout(std430, binding = 0) buffer Visibility { uint bits[]; };
-void main()
-{
-  vec4 clip = lightMatrix * vec4(vertexMC, 1.0);
-  vec3 ndc = clip.xyz / clip.w;
-  ivec2 texel = ivec2(floor((ndc.xy * 0.5 + 0.5) * float(resolution)));
-  float depth = ndc.z * 0.5 + 0.5;
-  uint bit = 1u << uint(gl_VertexID % 32);
-  int word = gl_VertexID / 32;
-  if (all(greaterThanEqual(texel, ivec2(0))) && all(lessThan(texel, ivec2(resolution))))
-  {
-    if (depth < texelFetch(nearestMap, texel, 0).r)
-    {
-      atomicOr(bits[slot * words + word], bit);
-    }
-    if (opposite >= 0 && depth > texelFetch(farthestMap, texel, 0).r)
-    {
-      atomicOr(bits[opposite * words + word], bit);
-    }
-  }
-  gl_Position = vec4(0.0, 0.0, 0.0, 1.0);
-}
-)";
-
-const char* const CompareFS = R"(#version 430 core
-out vec4 color;
-void main()
-{
-  color = vec4(1.0);
-}
-)";
-
-// The camera pass: candidates that survive the early depth test mark their bit.
-const char* const ViewFS = R"(#version 430 core
-layout(early_fragment_tests) in;
-layout(std430, binding = 0) buffer Seen { uint seen[]; };
-void main()
-{
-  uint bit = 1u << uint(gl_PrimitiveID % 32);
-  if ((seen[gl_PrimitiveID / 32] & bit) == 0u)
-  {
-    atomicOr(seen[gl_PrimitiveID / 32], bit);
-  }
-}
-)";
 
 // Column-major orthographic projection along -direction of the sphere of `radius` around the
 // origin: x and y across the direction, depth increasing away from the light.
@@ -169,11 +70,27 @@ void LightMatrix(const std::array<double, 3>& l, double radius, float m[16])
   }
 }
 
+// A new texture in place of `texture` (whose resources are released): texels read as they are
+// (nearest, clamped).
+void Replace(vtkSmartPointer<vtkTextureObject>& texture, vtkOpenGLRenderWindow* window)
+{
+  if (texture)
+  {
+    texture->ReleaseGraphicsResources(window);
+  }
+  texture = vtkSmartPointer<vtkTextureObject>::New();
+  texture->SetContext(window);
+  texture->SetMinificationFilter(vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+}
+
 // Makes `texture` a width x height float depth texture, the only attachment of `framebuffer`
 // (both created when missing), unless it already is; false with `error` otherwise, leaving no
 // texture, so that the next call tries again.
-bool DepthTarget(vtkOpenGLRenderWindow* window, vtkTextureObject*& texture,
-  vtkOpenGLFramebufferObject*& framebuffer, int width, int height, const char* what,
+bool DepthTarget(vtkOpenGLRenderWindow* window, vtkSmartPointer<vtkTextureObject>& texture,
+  vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer, int width, int height, const char* what,
   std::string& error)
 {
   if (texture && texture->GetWidth() == static_cast<unsigned int>(width) &&
@@ -181,17 +98,7 @@ bool DepthTarget(vtkOpenGLRenderWindow* window, vtkTextureObject*& texture,
   {
     return true;
   }
-  if (texture)
-  {
-    texture->ReleaseGraphicsResources(window);
-    texture->Delete();
-  }
-  texture = vtkTextureObject::New();
-  texture->SetContext(window);
-  texture->SetMinificationFilter(vtkTextureObject::Nearest);
-  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-  texture->SetWrapS(vtkTextureObject::ClampToEdge);
-  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  Replace(texture, window);
   bool ready = texture->AllocateDepth(width, height, vtkTextureObject::Float32);
   if (!ready)
   {
@@ -202,7 +109,7 @@ bool DepthTarget(vtkOpenGLRenderWindow* window, vtkTextureObject*& texture,
   {
     if (!framebuffer)
     {
-      framebuffer = vtkOpenGLFramebufferObject::New();
+      framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
       framebuffer->SetContext(window);
     }
     vtkOpenGLState* state = window->GetState();
@@ -223,7 +130,6 @@ bool DepthTarget(vtkOpenGLRenderWindow* window, vtkTextureObject*& texture,
   if (!ready)
   {
     texture->ReleaseGraphicsResources(window);
-    texture->Delete();
     texture = nullptr;
   }
   return ready;
@@ -306,9 +212,9 @@ bool vtkVisibilityRenderer::SetScene(vtkOpenGLRenderWindow* window,
 
   if (!this->Points)
   {
-    this->Points = vtkOpenGLBufferObject::New();
+    this->Points = vtkSmartPointer<vtkOpenGLBufferObject>::New();
     this->Points->SetType(vtkOpenGLBufferObject::ArrayBuffer);
-    this->Triangles = vtkOpenGLBufferObject::New();
+    this->Triangles = vtkSmartPointer<vtkOpenGLBufferObject>::New();
     this->Triangles->SetType(vtkOpenGLBufferObject::ElementArrayBuffer);
     this->UploadedPoints.clear();
     this->UploadedTriangles.clear();
@@ -340,17 +246,16 @@ bool vtkVisibilityRenderer::SetScene(vtkOpenGLRenderWindow* window,
   vtkOpenGLShaderCache* cache = window->GetShaderCache();
   if (!this->DepthProgram)
   {
-    this->DepthProgram = cache->ReadyShaderProgram(DepthVS, DepthFS, "");
+    this->DepthProgram = cache->ReadyShaderProgram(vtkVisibilityDepthVS, vtkVisibilityDepthFS, "");
     if (!this->DepthProgram)
     {
       error = "the depth shader did not compile";
       return false;
     }
-    this->DepthProgram->Register(nullptr);
   }
   if (!this->DepthVAO)
   {
-    this->DepthVAO = vtkOpenGLVertexArrayObject::New();
+    this->DepthVAO = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
   }
   cache->ReadyShaderProgram(this->DepthProgram);
   this->DepthVAO->Bind();
@@ -372,9 +277,16 @@ bool vtkVisibilityRenderer::SetScene(vtkOpenGLRenderWindow* window,
 void vtkVisibilityRenderer::RenderDepth(const std::array<double, 3>& direction, float matrix[16])
 {
   LightMatrix(direction, this->Radius, matrix);
+  this->DrawSceneDepth(matrix);
+  ++this->DepthPasses;
+}
+
+//------------------------------------------------------------------------------
+void vtkVisibilityRenderer::DrawSceneDepth(const float matrix[16])
+{
   vtkOpenGLState* state = this->Window->GetState();
   this->Window->GetShaderCache()->ReadyShaderProgram(this->DepthProgram);
-  this->DepthProgram->SetUniformMatrix4x4("lightMatrix", matrix);
+  this->DepthProgram->SetUniformMatrix4x4("clipMatrix", const_cast<float*>(matrix));
   state->vtkglDepthMask(GL_TRUE);
   state->vtkglClearDepth(1.0);
   state->vtkglClear(GL_DEPTH_BUFFER_BIT);
@@ -385,7 +297,7 @@ void vtkVisibilityRenderer::RenderDepth(const std::array<double, 3>& direction, 
   glDrawElements(
     GL_TRIANGLES, static_cast<GLsizei>(3 * this->NumberOfTriangles), GL_UNSIGNED_INT, nullptr);
   this->DepthVAO->Release();
-  ++this->DepthPasses;
+  glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
 //------------------------------------------------------------------------------
@@ -528,7 +440,7 @@ bool vtkVisibilityRenderer::DepthCompare(const std::vector<std::array<double, 3>
     // The receivers to test, drawn by index: gl_VertexID is then the receiver's id.
     if (!this->Subset)
     {
-      this->Subset = vtkOpenGLBufferObject::New();
+      this->Subset = vtkSmartPointer<vtkOpenGLBufferObject>::New();
       this->Subset->SetType(vtkOpenGLBufferObject::ElementArrayBuffer);
     }
     if (!subset->empty() &&
@@ -696,7 +608,7 @@ bool vtkVisibilityRenderer::ViewVisible(const float matrix[16], int width, int h
   }
   if (!this->Candidates)
   {
-    this->Candidates = vtkOpenGLBufferObject::New();
+    this->Candidates = vtkSmartPointer<vtkOpenGLBufferObject>::New();
     this->Candidates->SetType(vtkOpenGLBufferObject::ElementArrayBuffer);
   }
   if (!this->Candidates->Upload(candidates, vtkOpenGLBufferObject::ElementArrayBuffer))
@@ -714,23 +626,13 @@ bool vtkVisibilityRenderer::ViewVisible(const float matrix[16], int width, int h
     state->vtkglViewport(0, 0, width, height);
     // The whole scene's depth, pushed back by the polygon offset so that a candidate is not
     // hidden by itself.
-    cache->ReadyShaderProgram(this->DepthProgram);
-    this->DepthProgram->SetUniformMatrix4x4("lightMatrix", const_cast<float*>(matrix));
-    state->vtkglDepthMask(GL_TRUE);
-    state->vtkglClearDepth(1.0);
-    state->vtkglClear(GL_DEPTH_BUFFER_BIT);
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(this->OffsetFactor, this->OffsetUnits);
-    this->DepthVAO->Bind();
-    this->Triangles->Bind();
-    glDrawElements(
-      GL_TRIANGLES, static_cast<GLsizei>(3 * this->NumberOfTriangles), GL_UNSIGNED_INT, nullptr);
-    glDisable(GL_POLYGON_OFFSET_FILL);
+    this->DrawSceneDepth(matrix);
     state->vtkglDepthMask(GL_FALSE);
     state->vtkglDepthFunc(GL_LEQUAL);
     if (queries)
     {
       // The paper's pass: one query per triangle.
+      this->DepthVAO->Bind();
       this->Candidates->Bind();
       this->QueryEach(
         count,
@@ -744,7 +646,6 @@ bool vtkVisibilityRenderer::ViewVisible(const float matrix[16], int width, int h
     }
     else
     {
-      this->DepthVAO->Release();
       const std::vector<std::uint32_t> zeros(words, 0u);
       glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->ViewStorage);
       glBufferData(
@@ -776,8 +677,8 @@ bool vtkVisibilityRenderer::PrepareView(int width, int height, bool queries, std
 {
   if (!queries && !this->ViewProgram)
   {
-    if (!this->ReadyProgram(
-          this->ViewProgram, this->ViewVAO, MatrixVS, ViewFS, "camera-view", error))
+    if (!this->ReadyProgram(this->ViewProgram, this->ViewVAO, vtkVisibilityMatrixVS,
+          vtkVisibilityCameraFS, "camera-view", error))
     {
       return false;
     }
@@ -788,9 +689,9 @@ bool vtkVisibilityRenderer::PrepareView(int width, int height, bool queries, std
 }
 
 //------------------------------------------------------------------------------
-bool vtkVisibilityRenderer::ReadyProgram(vtkShaderProgram*& program,
-  vtkOpenGLVertexArrayObject*& vao, const char* vs, const char* fs, const char* what,
-  std::string& error)
+bool vtkVisibilityRenderer::ReadyProgram(vtkSmartPointer<vtkShaderProgram>& program,
+  vtkSmartPointer<vtkOpenGLVertexArrayObject>& vao, const char* vs, const char* fs,
+  const char* what, std::string& error)
 {
   if (program)
   {
@@ -814,19 +715,17 @@ bool vtkVisibilityRenderer::ReadyProgram(vtkShaderProgram*& program,
   }
   // Kept only once complete, so that a failure is met again, not skipped, next time.
   program = compiled;
-  program->Register(nullptr);
   vao = bound;
-  vao->Register(nullptr);
   return true;
 }
 
 //------------------------------------------------------------------------------
 bool vtkVisibilityRenderer::PreparePairs(std::string& error)
 {
-  if (!this->ReadyProgram(
-        this->PairProgram, this->PairVAO, MatrixVS, PairFS, "nearest-and-farthest", error) ||
-    !this->ReadyProgram(
-      this->CompareProgram, this->CompareVAO, CompareVS, CompareFS, "depth-compare", error))
+  if (!this->ReadyProgram(this->PairProgram, this->PairVAO, vtkVisibilityMatrixVS,
+        vtkVisibilityPairFS, "nearest-and-farthest", error) ||
+    !this->ReadyProgram(this->CompareProgram, this->CompareVAO, vtkVisibilityCompareVS,
+      vtkVisibilityCompareFS, "depth-compare", error))
   {
     return false;
   }
@@ -834,19 +733,9 @@ bool vtkVisibilityRenderer::PreparePairs(std::string& error)
   {
     return true;
   }
-  for (vtkTextureObject** texture : { &this->Nearest, &this->Farthest })
+  for (vtkSmartPointer<vtkTextureObject>* texture : { &this->Nearest, &this->Farthest })
   {
-    if (*texture)
-    {
-      (*texture)->ReleaseGraphicsResources(this->Window);
-      (*texture)->Delete();
-    }
-    *texture = vtkTextureObject::New();
-    (*texture)->SetContext(this->Window);
-    (*texture)->SetMinificationFilter(vtkTextureObject::Nearest);
-    (*texture)->SetMagnificationFilter(vtkTextureObject::Nearest);
-    (*texture)->SetWrapS(vtkTextureObject::ClampToEdge);
-    (*texture)->SetWrapT(vtkTextureObject::ClampToEdge);
+    Replace(*texture, this->Window);
     if (!(*texture)->Allocate2D(this->Resolution, this->Resolution, 1, VTK_FLOAT))
     {
       error = "a " + std::to_string(this->Resolution) + "^2 float texture could not be allocated";
@@ -855,7 +744,7 @@ bool vtkVisibilityRenderer::PreparePairs(std::string& error)
   }
   if (!this->PairFramebuffer)
   {
-    this->PairFramebuffer = vtkOpenGLFramebufferObject::New();
+    this->PairFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
     this->PairFramebuffer->SetContext(this->Window);
   }
   vtkOpenGLState* state = this->Window->GetState();
@@ -901,52 +790,40 @@ void vtkVisibilityRenderer::ReleaseGraphicsResources(vtkWindow* window)
     *buffer = 0;
   }
   this->Queries.clear();
-  for (vtkShaderProgram** program :
+  for (auto* program :
     { &this->DepthProgram, &this->PairProgram, &this->CompareProgram, &this->ViewProgram })
   {
-    if (*program)
-    {
-      (*program)->UnRegister(nullptr);
-      *program = nullptr;
-    }
+    *program = nullptr; // the window's shader cache releases its programs
   }
-  for (vtkOpenGLVertexArrayObject** vao :
-    { &this->DepthVAO, &this->PairVAO, &this->CompareVAO, &this->ViewVAO })
+  for (auto* vao : { &this->DepthVAO, &this->PairVAO, &this->CompareVAO, &this->ViewVAO })
   {
     if (*vao)
     {
       (*vao)->ReleaseGraphicsResources();
-      (*vao)->Delete();
       *vao = nullptr;
     }
   }
-  for (vtkOpenGLBufferObject** buffer :
-    { &this->Points, &this->Triangles, &this->Subset, &this->Candidates })
+  for (auto* buffer : { &this->Points, &this->Triangles, &this->Subset, &this->Candidates })
   {
     if (*buffer)
     {
       (*buffer)->ReleaseGraphicsResources();
-      (*buffer)->Delete();
       *buffer = nullptr;
     }
   }
-  for (vtkOpenGLFramebufferObject** framebuffer :
-    { &this->Framebuffer, &this->PairFramebuffer, &this->ViewFramebuffer })
+  for (auto* framebuffer : { &this->Framebuffer, &this->PairFramebuffer, &this->ViewFramebuffer })
   {
     if (*framebuffer)
     {
       (*framebuffer)->ReleaseGraphicsResources(window);
-      (*framebuffer)->Delete();
       *framebuffer = nullptr;
     }
   }
-  for (vtkTextureObject** texture :
-    { &this->Depth, &this->Nearest, &this->Farthest, &this->ViewDepth })
+  for (auto* texture : { &this->Depth, &this->Nearest, &this->Farthest, &this->ViewDepth })
   {
     if (*texture)
     {
       (*texture)->ReleaseGraphicsResources(window);
-      (*texture)->Delete();
       *texture = nullptr;
     }
   }

@@ -42,6 +42,7 @@
 #define vtkVisibilityRenderer_h
 
 #include "vtkApertureLightingModule.h" // For export macro
+#include "vtkSmartPointer.h"           // For vtkSmartPointer
 #include "vtkType.h"
 
 #include <array>
@@ -127,44 +128,48 @@ public:
 private:
   // Renders the depth pass for a direction; `matrix` gets its column-major projection.
   void RenderDepth(const std::array<double, 3>& direction, float matrix[16]);
+  // Clears the bound depth target and draws the scene's depth into it through `matrix`
+  // (column-major, to clip space), pushed back by the polygon offset.
+  void DrawSceneDepth(const float matrix[16]);
   // Shaders, textures and framebuffer of DepthCompare's paired depth pass.
   bool PreparePairs(std::string& error);
   // Program, depth texture and framebuffer of the camera pass.
   bool PrepareView(int width, int height, bool queries, std::string& error);
   // Compiles a program whose vertex shader takes the scene's points as vertexMC, with its vertex
   // array; unless `program` is set already.
-  bool ReadyProgram(vtkShaderProgram*& program, vtkOpenGLVertexArrayObject*& vao, const char* vs,
-    const char* fs, const char* what, std::string& error);
+  bool ReadyProgram(vtkSmartPointer<vtkShaderProgram>& program,
+    vtkSmartPointer<vtkOpenGLVertexArrayObject>& vao, const char* vs, const char* fs,
+    const char* what, std::string& error);
   // Issues one occlusion query per item (draw(i) draws item i), a batch ahead of the reads,
   // and calls passed(i) for those with samples passed.
   void QueryEach(size_t count, const std::function<void(size_t)>& draw,
     const std::function<void(size_t)>& passed);
 
   vtkOpenGLRenderWindow* Window = nullptr;
-  vtkOpenGLBufferObject* Points = nullptr;
-  vtkOpenGLBufferObject* Triangles = nullptr;
-  vtkOpenGLBufferObject* Subset = nullptr;
-  vtkOpenGLBufferObject* Candidates = nullptr;
-  vtkOpenGLVertexArrayObject* ViewVAO = nullptr;
-  vtkOpenGLFramebufferObject* ViewFramebuffer = nullptr;
-  vtkTextureObject* ViewDepth = nullptr;
-  vtkShaderProgram* ViewProgram = nullptr;
+  vtkSmartPointer<vtkOpenGLBufferObject> Points;
+  vtkSmartPointer<vtkOpenGLBufferObject> Triangles;
+  vtkSmartPointer<vtkOpenGLBufferObject> Subset;
+  vtkSmartPointer<vtkOpenGLBufferObject> Candidates;
+  vtkSmartPointer<vtkOpenGLVertexArrayObject> ViewVAO;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> ViewFramebuffer;
+  vtkSmartPointer<vtkTextureObject> ViewDepth;
+  vtkSmartPointer<vtkShaderProgram> ViewProgram;
   unsigned int ViewStorage = 0;
   // What is on the GPU, to upload only what changes.
   std::vector<float> UploadedPoints;
   std::vector<std::uint32_t> UploadedTriangles;
   vtkIdType UploadedBytes = 0;
-  vtkOpenGLVertexArrayObject* DepthVAO = nullptr;
-  vtkOpenGLVertexArrayObject* PairVAO = nullptr;
-  vtkOpenGLVertexArrayObject* CompareVAO = nullptr;
-  vtkOpenGLFramebufferObject* Framebuffer = nullptr;
-  vtkOpenGLFramebufferObject* PairFramebuffer = nullptr;
-  vtkTextureObject* Depth = nullptr;
-  vtkTextureObject* Nearest = nullptr;
-  vtkTextureObject* Farthest = nullptr;
-  vtkShaderProgram* DepthProgram = nullptr;
-  vtkShaderProgram* PairProgram = nullptr;
-  vtkShaderProgram* CompareProgram = nullptr;
+  vtkSmartPointer<vtkOpenGLVertexArrayObject> DepthVAO;
+  vtkSmartPointer<vtkOpenGLVertexArrayObject> PairVAO;
+  vtkSmartPointer<vtkOpenGLVertexArrayObject> CompareVAO;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> PairFramebuffer;
+  vtkSmartPointer<vtkTextureObject> Depth;
+  vtkSmartPointer<vtkTextureObject> Nearest;
+  vtkSmartPointer<vtkTextureObject> Farthest;
+  vtkSmartPointer<vtkShaderProgram> DepthProgram;
+  vtkSmartPointer<vtkShaderProgram> PairProgram;
+  vtkSmartPointer<vtkShaderProgram> CompareProgram;
   std::vector<unsigned int> Queries;
   unsigned int Storage = 0;
   vtkIdType NumberOfTriangles = 0;

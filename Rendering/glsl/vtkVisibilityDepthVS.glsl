@@ -1,0 +1,9 @@
+//VTK::System::Dec
+// vtkVisibilityRenderer's depth pass (the scene seen along a light direction, or by the camera):
+// the scene's points placed by one matrix. Any OpenGL version VTK runs on.
+in vec3 vertexMC;
+uniform mat4 clipMatrix;
+void main()
+{
+  gl_Position = clipMatrix * vec4(vertexMC, 1.0);
+}
