@@ -21,6 +21,7 @@
 // Usage: BenchmarkAperturePrecompute <Testing/Data folder> [--quick]
 // --quick runs a few points only (a smoke test that the benchmark still works).
 
+#include "vtkApertureBenchmarkMemory.h"
 #include "vtkAperturePrecompute.h"
 #include "vtkApertureRayPacket.h"
 #include "vtkApertureRaySampler.h"
@@ -54,28 +55,8 @@ namespace
 {
 constexpr int Lanes = vtkApertureRayPacket::Lanes;
 
-// Resident memory figures of this process, in KiB: "VmRSS" or "VmHWM" (peak).
-long StatusKiB(const char* field)
-{
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while (std::getline(status, line))
-  {
-    if (line.compare(0, std::strlen(field), field) == 0)
-    {
-      return std::stol(line.substr(std::strlen(field) + 1));
-    }
-  }
-  return -1;
-}
-
-// Restarts the peak-RSS counter (Linux 4.0+).
-bool ResetPeak()
-{
-  std::ofstream clear("/proc/self/clear_refs");
-  clear << "5";
-  return static_cast<bool>(clear);
-}
+using vtkApertureBenchmark::ResetPeak;
+using vtkApertureBenchmark::StatusKiB;
 
 double Seconds(const std::function<void()>& work, int repeats)
 {

@@ -24,6 +24,7 @@
 // --quick shrinks every size (a smoke test that the benchmark still works); --section N runs
 // only section N (2 with the matching ray count of section 1's full run, 256).
 
+#include "vtkApertureBenchmarkMemory.h"
 #include "vtkAperturePrecompute.h"
 #include "vtkGDALDEMReader.h"
 #include "vtkGDALGridWriter.h"
@@ -45,36 +46,13 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
-#ifdef __GLIBC__
-#include <malloc.h>
-#endif
 #include <string>
 #include <vector>
 
 namespace
 {
-// Resident memory of this process in KiB: "VmRSS:" or "VmHWM:" (peak since the last reset).
-long StatusKiB(const char* field)
-{
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while (std::getline(status, line))
-  {
-    if (line.compare(0, std::strlen(field), field) == 0)
-    {
-      return std::stol(line.substr(std::strlen(field) + 1));
-    }
-  }
-  return -1;
-}
-
-void ResetPeak()
-{
-#ifdef __GLIBC__
-  malloc_trim(0);
-#endif
-  std::ofstream("/proc/self/clear_refs") << "5";
-}
+using vtkApertureBenchmark::ResetPeak;
+using vtkApertureBenchmark::StatusKiB;
 
 double Since(std::chrono::steady_clock::time_point start)
 {

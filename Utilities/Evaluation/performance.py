@@ -109,19 +109,24 @@ def plot(path, title, xlabel, ylabel, series, logx=True, logy=True):
     writer.Write()
 
 
+def fuji_grid(data, side, spacing):
+    """The Fuji tile (texels `spacing` apart) resampled to side x side, computed."""
+    reader = vtkTerrainRGBReader()
+    reader.SetFileName(os.path.join(data, "fuji-terrain-rgb.png"))
+    reader.SetSpacing(spacing, spacing)
+    resize = vtkImageResize()
+    resize.SetInputConnection(reader.GetOutputPort())
+    resize.SetOutputDimensions(side, side, 1)
+    resize.Update()
+    return resize
+
+
 def precompute_sweep(data):
     """Precompute seconds (256 rays) on Fuji grids of growing size."""
     points, seconds = [], []
     for side in (64, 128, 256, 512, 1024):
-        reader = vtkTerrainRGBReader()
-        reader.SetFileName(os.path.join(data, "fuji-terrain-rgb.png"))
-        reader.SetSpacing(60.0, 60.0)
-        resize = vtkImageResize()
-        resize.SetInputConnection(reader.GetOutputPort())
-        resize.SetOutputDimensions(side, side, 1)
-        resize.Update()
         precompute = vtkAperturePrecompute()
-        precompute.SetInputConnection(resize.GetOutputPort())
+        precompute.SetInputConnection(fuji_grid(data, side, 60.0).GetOutputPort())
         precompute.SetMethodToRays()
         precompute.SetNumberOfRays(256)
         start = time.perf_counter()
@@ -137,15 +142,8 @@ def horizon_sweep(data):
     for sectors in (8, 16, 32, 64):
         work, seconds = [], []
         for side in (256, 512, 1024, 2048, 4096):
-            reader = vtkTerrainRGBReader()
-            reader.SetFileName(os.path.join(data, "fuji-terrain-rgb.png"))
-            reader.SetSpacing(30.0, 30.0)
-            resize = vtkImageResize()
-            resize.SetInputConnection(reader.GetOutputPort())
-            resize.SetOutputDimensions(side, side, 1)
-            resize.Update()
             precompute = vtkAperturePrecompute()
-            precompute.SetInputConnection(resize.GetOutputPort())
+            precompute.SetInputConnection(fuji_grid(data, side, 30.0).GetOutputPort())
             precompute.SetNumberOfSectors(sectors)
             start = time.perf_counter()
             precompute.Update()
