@@ -732,8 +732,8 @@ int vtkAperturePrecompute::RequestData(
     output->Initialize(); // an empty piece
     return 1;
   }
-  const int* got =
-    vtkImageData::SafeDownCast(input) ? vtkImageData::SafeDownCast(input)->GetExtent() : nullptr;
+  auto* image = vtkImageData::SafeDownCast(input);
+  const int* got = image ? image->GetExtent() : nullptr;
   if (got && extent &&
     (extent[0] < got[0] || extent[1] > got[1] || extent[2] < got[2] || extent[3] > got[3]))
   {
@@ -750,7 +750,7 @@ int vtkAperturePrecompute::RequestData(
   if (ok && run.Horizons)
   {
     // 2. The height field's horizons, straight to the output extent's caps.
-    ok = run.SweepHorizons(extent ? extent : vtkImageData::SafeDownCast(input)->GetExtent());
+    ok = run.SweepHorizons(extent ? extent : got);
   }
   else if (ok)
   {

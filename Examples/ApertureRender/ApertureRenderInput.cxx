@@ -263,11 +263,8 @@ bool LoadHeightField(const std::string& name, const std::string& extension, cons
     {
       input.Notes.push_back(std::string("ground spacing: ") + raster->GetGroundSpacingNote());
     }
-    kind = georeferenced ? "GeoTIFF/GDAL" : "TIFF/GDAL";
-    if (extension == ".tif" || extension == ".tiff")
-    {
-      kind = georeferenced ? "GeoTIFF" : "TIFF";
-    }
+    const bool tiff = extension == ".tif" || extension == ".tiff";
+    kind = tiff ? (georeferenced ? "GeoTIFF" : "TIFF") : "GDAL raster (" + extension + ")";
   }
   else if (extension == ".dem")
   {

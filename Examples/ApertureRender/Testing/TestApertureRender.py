@@ -202,7 +202,8 @@ subprocess.run(["gdal_translate", "-q", "-a_srs", "EPSG:32654", path("fuji.asc")
 expect_picture("GeoTIFF", [path("fuji-utm.tif"), *NO_RAYS],
                needles=("GeoTIFF height field, 64 x 64 samples, 50 m apart",
                         "ground spacing: metres", "1 samples without data"))
-expect_picture("ESRI ASCII grid", [path("fuji.asc"), *NO_RAYS], needles=("50 m apart",))
+expect_picture("ESRI ASCII grid", [path("fuji.asc"), *NO_RAYS],
+               needles=("GDAL raster (.asc) height field", "50 m apart"))
 expect_picture("SRTM tile", [path("N35E138.hgt"), *FAST],
                needles=("SRTM", "4 samples without data"))
 expect_picture("USGS DEM", [path("fuji.dem"), *FAST],
