@@ -31,6 +31,7 @@
 #include "vtkXMLPolyDataReader.h"
 #include "vtksys/SystemTools.hxx"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -102,6 +103,91 @@ bool CheckSTL(const std::string& name, std::string& error)
   return true;
 }
 
+// A count attribute of a VTP element (0 when absent); -1 when it is not a count.
+double VTPCount(vtkXMLDataElement* element, const char* name)
+{
+  const char* text = element->GetAttribute(name);
+  char* end = nullptr;
+  const double count = text ? std::strtod(text, &end) : 0.0;
+  return (text && (end == text || !(count >= 0.0))) ? -1.0 : count;
+}
+
+// The values a VTP group's arrays take: `tuples` each (a FieldData array says its own) times its
+// components; -1 when an attribute is not a count.
+double VTPArrayValues(vtkXMLDataElement* group, double tuples)
+{
+  const bool field = std::string(group->GetName() ? group->GetName() : "") == "FieldData";
+  double values = 0.0;
+  for (int j = 0; j < group->GetNumberOfNestedElements(); ++j)
+  {
+    vtkXMLDataElement* array = group->GetNestedElement(j);
+    const double count = field ? VTPCount(array, "NumberOfTuples") : tuples;
+    const double components = VTPCount(array, "NumberOfComponents");
+    if (count < 0.0 || components < 0.0)
+    {
+      return -1.0;
+    }
+    values += count * std::max(components, 1.0);
+  }
+  return values;
+}
+
+// The values a VTP piece's counts ask the reader to allocate: its points, cell offsets and every
+// array; -1 when an attribute is not a count.
+double VTPPieceValues(vtkXMLDataElement* piece)
+{
+  const double points = VTPCount(piece, "NumberOfPoints");
+  double cells = 0.0;
+  for (const char* kind : { "NumberOfVerts", "NumberOfLines", "NumberOfStrips", "NumberOfPolys" })
+  {
+    const double count = VTPCount(piece, kind);
+    cells = (count < 0.0 || cells < 0.0) ? -1.0 : cells + count;
+  }
+  double values = (points < 0.0 || cells < 0.0) ? -1.0 : 3.0 * points + cells + 4.0;
+  for (int i = 0; values >= 0.0 && i < piece->GetNumberOfNestedElements(); ++i)
+  {
+    vtkXMLDataElement* group = piece->GetNestedElement(i);
+    const std::string name = group->GetName() ? group->GetName() : "";
+    const double arrays =
+      VTPArrayValues(group, name == "PointData" ? points : (name == "CellData" ? cells : 0.0));
+    values = arrays < 0.0 ? -1.0 : values + arrays;
+  }
+  return values;
+}
+
+// vtkXMLPolyDataReader allocates what a piece's counts say before it reads the data: a damaged
+// count can ask for exabytes. Stored plainly (ASCII, base64, raw) every value takes a byte or more;
+// VTK's compressors on its 32 KiB blocks pack at most about 630 (zlib) or 250 (LZMA) bytes into
+// one, so a compressed file may announce 4096 values a byte.
+bool CheckVTPSizes(
+  vtkXMLDataElement* root, vtkXMLDataElement* polyData, const std::string& name, std::string& error)
+{
+  const double fileSize = static_cast<double>(vtksys::SystemTools::FileLength(name));
+  const double capacity = root->GetAttribute("compressor") ? 4096.0 * fileSize : fileSize;
+  double values = 0.0;
+  for (int i = 0; i < polyData->GetNumberOfNestedElements(); ++i)
+  {
+    vtkXMLDataElement* element = polyData->GetNestedElement(i);
+    const bool isPiece = std::string(element->GetName() ? element->GetName() : "") == "Piece";
+    const double piece = isPiece ? VTPPieceValues(element) : VTPArrayValues(element, 0.0);
+    if (piece < 0.0)
+    {
+      error = Quoted(name) + " is damaged (a count that is not a number of items)";
+      return false;
+    }
+    values += piece;
+  }
+  if (values > capacity)
+  {
+    std::ostringstream what;
+    what << Quoted(name) << " is damaged: its counts announce " << values << " values, more than "
+         << static_cast<unsigned long>(fileSize) << " bytes can hold";
+    error = what.str();
+    return false;
+  }
+  return true;
+}
+
 // vtkXMLPolyDataReader leaks the arrays of a piece whose points do not have 3 components: its
 // header is read first, and every piece's Points array checked.
 bool CheckVTP(vtkXMLPolyDataReader* reader, MessageCapture& messages, const std::string& name,
@@ -128,7 +214,7 @@ bool CheckVTP(vtkXMLPolyDataReader* reader, MessageCapture& messages, const std:
       return false;
     }
   }
-  return true;
+  return CheckVTPSizes(root, data, name, error);
 }
 
 // Updates a reader; false with a sentence when it reports an error or runs out of memory (a

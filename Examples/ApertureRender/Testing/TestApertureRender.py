@@ -467,6 +467,16 @@ expect_failure("broken STL", [write_bytes("broken.stl", b"solid x\n facet nonsen
                               "-o", path("x.png")], 1, "broken.stl")
 expect_failure("broken VTP", [write_bytes("broken.vtp", b"not xml at all"),
                               "-o", path("x.png")], 1, "not a VTK XML polydata file")
+# Counts no file of that size can hold (the reader would allocate them before reading).
+bunny_vtp = open(path("bunny.vtp"), "rb").read()
+huge = (("points", b'NumberOfPoints="35947"', b'NumberOfPoints="1152921504606846976"'),
+        ("components", b'Name="GroupIds"', b'Name="GroupIds" NumberOfComponents="4000000000"'),
+        ("polygons", b'NumberOfPolys="69451"', b'NumberOfPolys="9e18"'))
+for what, old, new in huge:
+    check(old in bunny_vtp, f"bunny.vtp says {old!r}")
+    expect_failure(f"VTP announcing too many {what}",
+                   [write_bytes("huge.vtp", bunny_vtp.replace(old, new, 1)), "-o", path("x.png")],
+                   1, "its counts announce")
 expect_failure("broken legacy VTK", [write_bytes("broken.vtk", b"garbage\n"),
                                      "-o", path("x.png")], 1, "not a VTK legacy file")
 fuji_bytes = open(fuji_png, "rb").read()
