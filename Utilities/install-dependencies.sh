@@ -2,6 +2,9 @@
 # Installs the Debian 12 packages the project needs, only those that are missing.
 #   install-dependencies.sh        what building and testing need
 #   install-dependencies.sh fuzz   and Clang, for `make fuzz` (libFuzzer and the sanitizers)
+#   install-dependencies.sh paraview   and ParaView 5.11 with Open MPI, for `make paraview`
+# ParaView comes without its Recommends: python3-paraview conflicts with python3-vtk9, and
+# removing that would remove libvtk9-dev (`make paraview` unpacks python3-paraview instead).
 set -euo pipefail
 
 packages=(
@@ -12,6 +15,9 @@ packages=(
 )
 if [ "${1:-}" = "fuzz" ]; then
   packages+=(clang)
+fi
+if [ "${1:-}" = "paraview" ]; then
+  packages+=(paraview paraview-dev openmpi-bin libopenmpi-dev)
 fi
 
 missing=()
