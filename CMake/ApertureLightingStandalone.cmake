@@ -10,6 +10,7 @@ set(_aperture_vtk_components
   CommonMath
   FiltersCore
   IOImage
+  ParallelCore
   RenderingCore
   RenderingOpenGL2
   opengl
@@ -27,6 +28,7 @@ set(_aperture_vtk_test_components
   ImagingCore
   ImagingGeneral
   InteractionStyle
+  ParallelMPI
   RenderingAnnotation
   RenderingFreeType
   TestingCore

@@ -11,6 +11,7 @@
 #include "vtkAperturePrecompute.h"
 
 #include "vtkApertureCellCheck.h"
+#include "vtkApertureDistributedOccluders.h"
 #include "vtkApertureRayPacket.h"
 #include "vtkApertureRaySampler.h"
 #include "vtkApertureRayScene.h"
@@ -29,6 +30,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
+#include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -203,8 +205,9 @@ void OpenAroundNormals(
 class vtkAperturePrecompute::vtkRun
 {
 public:
-  vtkRun(vtkAperturePrecompute* self)
+  vtkRun(vtkAperturePrecompute* self, bool distributed)
     : Self(self)
+    , Distributed(distributed)
   {
   }
 
@@ -221,8 +224,11 @@ public:
   void Warn();
 
   vtkAperturePrecompute* Self;
+  const bool Distributed;  // one piece of several: the other ranks' surfaces occlude too
+  bool EmptyPiece = false; // a piece without points, which gives an empty output
   std::vector<std::unique_ptr<Receiver>> Receivers;
   std::vector<vtkPolyData*> Occluders;
+  vtkSmartPointer<vtkPolyData> RemoteOccluders;
   std::vector<vtkApertureSurface> OccluderSurfaces;
   vtkApertureRayScene Scene;
   vtkIdType TotalPoints = 0;
@@ -314,6 +320,11 @@ bool vtkAperturePrecompute::vtkRun::CheckReceivers()
       surfaceCells += poly->GetNumberOfPolys() + poly->GetNumberOfStrips();
     }
   }
+  if (this->TotalPoints == 0 && this->Distributed)
+  {
+    this->EmptyPiece = true;
+    return true;
+  }
   if (this->TotalPoints == 0)
   {
     vtkErrorWithObjectMacro(
@@ -330,6 +341,8 @@ bool vtkAperturePrecompute::vtkRun::CheckReceivers()
 }
 
 //------------------------------------------------------------------------------
+// The occluder port's surfaces and, in a distributed run on surfaces, the other ranks' (a
+// collective step, so it comes before any check can fail).
 void vtkAperturePrecompute::vtkRun::CollectOccluders(vtkInformationVector* occluderInfo)
 {
   for (int i = 0; i < occluderInfo->GetNumberOfInformationObjects(); ++i)
@@ -337,6 +350,25 @@ void vtkAperturePrecompute::vtkRun::CollectOccluders(vtkInformationVector* occlu
     if (auto* occluder = vtkPolyData::GetData(occluderInfo, i))
     {
       this->Occluders.push_back(occluder);
+    }
+  }
+  std::vector<vtkPolyData*> local;
+  for (const auto& r : this->Receivers)
+  {
+    if (auto* poly = vtkPolyData::SafeDownCast(r->Input))
+    {
+      local.push_back(poly);
+    }
+  }
+  const bool heightField =
+    this->Receivers.size() == 1 && vtkImageData::SafeDownCast(this->Receivers[0]->Input);
+  if (this->Distributed && !heightField)
+  {
+    this->RemoteOccluders = vtkApertureDistributedOccluders::Gather(
+      this->Self->Controller, local, this->Self->MaximumDistance);
+    if (this->RemoteOccluders->GetNumberOfCells() > 0)
+    {
+      this->Occluders.push_back(this->RemoteOccluders);
     }
   }
 }
@@ -637,10 +669,17 @@ vtkAperturePrecompute::vtkAperturePrecompute()
   // Height fields: heights are the active point scalars unless another array is chosen.
   this->SetInputArrayToProcess(
     0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
+  this->SetController(vtkMultiProcessController::GetGlobalController());
 }
 
 //------------------------------------------------------------------------------
-vtkAperturePrecompute::~vtkAperturePrecompute() = default;
+vtkAperturePrecompute::~vtkAperturePrecompute()
+{
+  this->SetController(nullptr);
+}
+
+//------------------------------------------------------------------------------
+vtkCxxSetObjectMacro(vtkAperturePrecompute, Controller, vtkMultiProcessController);
 
 //------------------------------------------------------------------------------
 void vtkAperturePrecompute::AddOccluderConnection(vtkAlgorithmOutput* output)
@@ -742,9 +781,15 @@ int vtkAperturePrecompute::RequestData(
     return 0;
   }
   // 1. Receivers and occluders, checked before any work; horizons or rays.
-  vtkRun run(this);
-  bool ok = run.CollectReceivers(input, output) && run.CheckReceivers();
+  vtkRun run(this, vtkApertureDistributedOccluders::IsDistributed(this->Controller, outInfo));
+  bool ok = run.CollectReceivers(input, output);
   run.CollectOccluders(inputVector[1]);
+  ok = ok && run.CheckReceivers();
+  if (ok && run.EmptyPiece)
+  {
+    output->Initialize();
+    return 1;
+  }
   ok = ok && run.ChooseMethod();
   this->UsedHorizons = ok && run.Horizons;
   if (ok && run.Horizons)
@@ -796,5 +841,6 @@ void vtkAperturePrecompute::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UsedHorizons: " << this->UsedHorizons << "\n";
   os << indent << "EmbreeConfiguration: " << this->EmbreeConfiguration << "\n";
   os << indent << "NumberOfOccluders: " << this->GetNumberOfInputConnections(1) << "\n";
+  os << indent << "Controller: " << this->Controller << "\n";
   os << indent << "NumberOfSurfacePoints: " << this->NumberOfSurfacePoints << "\n";
 }

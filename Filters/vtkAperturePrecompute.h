@@ -83,6 +83,8 @@
 
 #include <string> // For std::string
 
+class vtkMultiProcessController;
+
 class VTKAPERTURELIGHTING_EXPORT vtkAperturePrecompute : public vtkPassInputTypeAlgorithm
 {
 public:
@@ -272,6 +274,20 @@ public:
    */
   vtkGetMacro(NumberOfSurfacePoints, vtkIdType);
 
+  ///@{
+  /**
+   * The controller of a distributed run (default: the global one). When the update asks for one
+   * of several pieces and the controller has several processes, the filter gathers every other
+   * rank's polygons and strips as occluders (only those within MaximumDistance of this rank's
+   * bounds when it is finite), so that each piece gets the serial answer; every rank must then
+   * update the filter, and an empty piece gives an empty output. Height-field pieces need no
+   * gathering: they ask their input for a halo of MaximumDistance instead (all of the grid when
+   * it is unlimited).
+   */
+  virtual void SetController(vtkMultiProcessController* controller);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  ///@}
+
 protected:
   vtkAperturePrecompute();
   ~vtkAperturePrecompute() override;
@@ -297,6 +313,7 @@ protected:
   int NumberOfSectors = 32;
   bool UsedHorizons = false;
   vtkIdType NumberOfSurfacePoints = 0;
+  vtkMultiProcessController* Controller = nullptr;
   std::string BentNormalArrayName = "BentNormal";
   std::string ApertureRadiusArrayName = "ApertureRadius";
   std::string AmbientOcclusionArrayName = "AmbientOcclusion";

@@ -10,6 +10,7 @@
 =========================================================================*/
 #include "vtkApertureReference.h"
 
+#include "vtkApertureDistributedOccluders.h"
 #include "vtkApertureRayPacket.h"
 #include "vtkApertureRaySampler.h"
 #include "vtkApertureRayScene.h"
@@ -21,10 +22,12 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
 
 #include <algorithm>
 #include <atomic>
@@ -169,6 +172,7 @@ vtkApertureReference::vtkApertureReference()
   this->SetNumberOfInputPorts(2);
   this->SetIrradianceArrayName("ReferenceIrradiance");
   this->SetNoiseArrayName("ReferenceNoise");
+  this->SetController(vtkMultiProcessController::GetGlobalController());
 }
 
 //------------------------------------------------------------------------------
@@ -177,7 +181,11 @@ vtkApertureReference::~vtkApertureReference()
   this->SetEnvironment(nullptr);
   this->SetIrradianceArrayName(nullptr);
   this->SetNoiseArrayName(nullptr);
+  this->SetController(nullptr);
 }
+
+//------------------------------------------------------------------------------
+vtkCxxSetObjectMacro(vtkApertureReference, Controller, vtkMultiProcessController);
 
 //------------------------------------------------------------------------------
 void vtkApertureReference::AddOccluderConnection(vtkAlgorithmOutput* occluder)
@@ -214,6 +222,19 @@ int vtkApertureReference::RequestData(
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  // A distributed run: the other ranks' surfaces occlude too (collective, before any check).
+  vtkSmartPointer<vtkPolyData> remote;
+  if (vtkApertureDistributedOccluders::IsDistributed(
+        this->Controller, outputVector->GetInformationObject(0)))
+  {
+    remote = vtkApertureDistributedOccluders::Gather(
+      this->Controller, { input }, std::numeric_limits<double>::infinity());
+    if (!input || input->GetNumberOfPoints() == 0)
+    {
+      output->Initialize(); // an empty piece
+      return 1;
+    }
+  }
   if (!input || input->GetNumberOfPoints() == 0)
   {
     vtkErrorMacro("The input is empty: there are no points to compute a reference for.");
@@ -247,6 +268,10 @@ int vtkApertureReference::RequestData(
     {
       occluders.push_back(occluder);
     }
+  }
+  if (remote && remote->GetNumberOfCells() > 0)
+  {
+    occluders.push_back(remote);
   }
   std::string error;
   vtkApertureSurface receivers;
@@ -325,6 +350,7 @@ void vtkApertureReference::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   static const char* const names[] = { "LIGHT", "SKY", "ENVIRONMENT" };
   os << indent << "Source: " << names[this->Source] << "\n";
+  os << indent << "Controller: " << this->Controller << "\n";
   os << indent << "LightDirection: (" << this->LightDirection[0] << ", " << this->LightDirection[1]
      << ", " << this->LightDirection[2] << ")\n";
   os << indent << "LightRadius: " << this->LightRadius << "\n";

@@ -53,6 +53,8 @@
 
 class vtkEnvironmentMap;
 
+class vtkMultiProcessController;
+
 class VTKAPERTURELIGHTING_EXPORT vtkApertureReference : public vtkPolyDataAlgorithm
 {
 public:
@@ -153,6 +155,17 @@ public:
    */
   vtkMTimeType GetMTime() override;
 
+  ///@{
+  /**
+   * The controller of a distributed run (default: the global one). When the update asks for one
+   * of several pieces and the controller has several processes, every other rank's polygons and
+   * strips occlude this rank's points too, so that each piece gets the serial answer; every rank
+   * must then update the filter, and an empty piece gives an empty output.
+   */
+  virtual void SetController(vtkMultiProcessController* controller);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  ///@}
+
 protected:
   vtkApertureReference();
   ~vtkApertureReference() override;
@@ -171,6 +184,7 @@ protected:
   double FeatureAngle = 60.0;
   char* IrradianceArrayName = nullptr;
   char* NoiseArrayName = nullptr;
+  vtkMultiProcessController* Controller = nullptr;
 
 private:
   vtkApertureReference(const vtkApertureReference&) = delete;

@@ -9,6 +9,7 @@
 
 =========================================================================*/
 #include "vtkEnvironmentVisibilityLighting.h"
+#include "vtkApertureDistributedOccluders.h"
 
 #include "vtkBitArray.h"
 #include "vtkDataArray.h"
@@ -19,10 +20,12 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -64,6 +67,25 @@ int vtkEnvironmentVisibilityLighting::FillInputPortInformation(int port, vtkInfo
 }
 
 //------------------------------------------------------------------------------
+int vtkEnvironmentVisibilityLighting::RequestUpdateExtent(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (!this->Superclass::RequestUpdateExtent(request, inputVector, outputVector))
+  {
+    return 0;
+  }
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  vtkInformation* environment = inputVector[1]->GetInformationObject(0);
+  if (environment && environment->Has(SDDP::WHOLE_EXTENT()))
+  {
+    environment->Set(SDDP::UPDATE_PIECE_NUMBER(), 0);
+    environment->Set(SDDP::UPDATE_NUMBER_OF_PIECES(), 1);
+    environment->Set(SDDP::UPDATE_EXTENT(), environment->Get(SDDP::WHOLE_EXTENT()), 6);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
 int vtkEnvironmentVisibilityLighting::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -72,6 +94,13 @@ int vtkEnvironmentVisibilityLighting::RequestData(
     ? vtkImageData::GetData(inputVector[1])
     : nullptr;
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  const bool piece = vtkApertureDistributedOccluders::IsDistributed(
+    vtkMultiProcessController::GetGlobalController(), outputVector->GetInformationObject(0));
+  if (piece && (!input || input->GetNumberOfPoints() == 0))
+  {
+    output->Initialize(); // an empty piece of a distributed surface
+    return 1;
+  }
   if (!input || input->GetNumberOfPoints() == 0)
   {
     vtkErrorMacro("The input is empty: there are no points to light.");

@@ -115,6 +115,9 @@ protected:
   ~vtkEnvironmentVisibilityLighting() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  // The whole environment, whatever piece of the surface is asked for.
+  int RequestUpdateExtent(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 

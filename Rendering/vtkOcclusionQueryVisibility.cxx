@@ -11,6 +11,7 @@
 #include "vtkOcclusionQueryVisibility.h"
 
 #include "vtkApertureDisplay.h"
+#include "vtkApertureDistributedOccluders.h"
 #include "vtkApertureSurface.h"
 #include "vtkLightSphere.h"
 #include "vtkMortonOrder.h"
@@ -27,6 +28,7 @@
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
+#include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -141,6 +143,7 @@ vtkOcclusionQueryVisibility::vtkOcclusionQueryVisibility()
   : Internals(new vtkInternals)
 {
   this->SetNumberOfInputPorts(2);
+  this->SetController(vtkMultiProcessController::GetGlobalController());
   this->Internals->WindowGone->SetClientData(this);
   this->Internals->WindowGone->SetCallback(
     [](vtkObject* window, unsigned long, void* self, void*)
@@ -151,9 +154,13 @@ vtkOcclusionQueryVisibility::vtkOcclusionQueryVisibility()
 }
 
 //------------------------------------------------------------------------------
+vtkCxxSetObjectMacro(vtkOcclusionQueryVisibility, Controller, vtkMultiProcessController);
+
+//------------------------------------------------------------------------------
 vtkOcclusionQueryVisibility::~vtkOcclusionQueryVisibility()
 {
   this->SetRenderWindow(nullptr);
+  this->SetController(nullptr);
   this->ReleaseGraphicsResources(this->OwnWindow);
   if (this->OwnWindow)
   {
@@ -803,6 +810,19 @@ int vtkOcclusionQueryVisibility::RequestData(
   this->NumberOfComputedPoints = 0;
   this->UploadedBytes = 0;
   in.Uploaded = false;
+  // A distributed run: the other ranks' surfaces occlude too (collective, before any check).
+  vtkSmartPointer<vtkPolyData> remote;
+  if (vtkApertureDistributedOccluders::IsDistributed(
+        this->Controller, outputVector->GetInformationObject(0)))
+  {
+    remote = vtkApertureDistributedOccluders::Gather(
+      this->Controller, { input }, std::numeric_limits<double>::infinity());
+    if (!input || input->GetNumberOfPoints() == 0)
+    {
+      output->Initialize(); // an empty piece
+      return 1;
+    }
+  }
   if (!input || input->GetNumberOfPoints() == 0)
   {
     vtkErrorMacro("The input is empty: there are no points to compute visibility for.");
@@ -820,6 +840,10 @@ int vtkOcclusionQueryVisibility::RequestData(
     {
       occluders.push_back(occluder);
     }
+  }
+  if (remote && remote->GetNumberOfCells() > 0)
+  {
+    occluders.push_back(remote);
   }
 
   // 1. The surfaces, and what is kept of earlier updates.
@@ -873,6 +897,7 @@ void vtkOcclusionQueryVisibility::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Level: " << this->Level << "\n";
+  os << indent << "Controller: " << this->Controller << "\n";
   os << indent << "Backend: " << this->GetBackendAsString() << "\n";
   os << indent << "DepthResolution: " << this->DepthResolution << "\n";
   os << indent << "PolygonOffsetFactor: " << this->PolygonOffsetFactor << "\n";

@@ -87,6 +87,7 @@
 #include <vector>     // For std::vector
 
 class vtkLightSphere;
+class vtkMultiProcessController;
 class vtkProp3D;
 class vtkRenderWindow;
 class vtkRenderer;
@@ -252,6 +253,18 @@ public:
    */
   void ReleaseGraphicsResources(vtkWindow* window);
 
+  ///@{
+  /**
+   * The controller of a distributed run (default: the global one). When the update asks for one
+   * of several pieces and the controller has several processes, every other rank's polygons and
+   * strips occlude this rank's points too (with every backend), so that each piece gets the
+   * serial matrix; every rank must then update the filter, and an empty piece gives an empty
+   * output.
+   */
+  virtual void SetController(vtkMultiProcessController* controller);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  ///@}
+
 protected:
   vtkOcclusionQueryVisibility();
   ~vtkOcclusionQueryVisibility() override;
@@ -303,6 +316,7 @@ private:
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;
   vtkRenderWindow* OwnWindow = nullptr;
+  vtkMultiProcessController* Controller = nullptr;
 };
 
 #endif

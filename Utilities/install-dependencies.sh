@@ -11,13 +11,13 @@ packages=(
   cmake make g++ pkg-config clang-format
   libvtk9-dev python3-vtk9 python3-numpy
   libembree-dev libopenexr-dev libglm-dev libx11-dev libgdal-dev gdal-bin
-  xvfb xauth
+  xvfb xauth openmpi-bin libopenmpi-dev
 )
 if [ "${1:-}" = "fuzz" ]; then
   packages+=(clang)
 fi
 if [ "${1:-}" = "paraview" ]; then
-  packages+=(paraview paraview-dev openmpi-bin libopenmpi-dev)
+  packages+=(paraview paraview-dev)
 fi
 
 missing=()

@@ -1,0 +1,175 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    vtkApertureDistributedOccluders.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkApertureDistributedOccluders.h"
+
+#include "vtkApertureCellCheck.h"
+#include "vtkAppendPolyData.h"
+#include "vtkBoundingBox.h"
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkInformation.h"
+#include "vtkMath.h"
+#include "vtkMultiProcessController.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+namespace
+{
+// Bounds of the finite points of valid pieces (uninitialised when there are none).
+vtkBoundingBox LocalBounds(const std::vector<vtkPolyData*>& pieces)
+{
+  vtkBoundingBox box;
+  for (vtkPolyData* piece : pieces)
+  {
+    vtkPoints* points = piece->GetPoints();
+    for (vtkIdType i = 0; points && i < points->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      points->GetPoint(i, p);
+      if (vtkMath::IsFinite(p[0]) && vtkMath::IsFinite(p[1]) && vtkMath::IsFinite(p[2]))
+      {
+        box.AddPoint(p);
+      }
+    }
+  }
+  return box;
+}
+
+// Whether a cell's points come within the boxes (each already grown by the maximum distance).
+bool NearAny(
+  vtkPoints* points, vtkIdType size, const vtkIdType* ids, const std::vector<vtkBoundingBox>& boxes)
+{
+  vtkBoundingBox cell;
+  for (vtkIdType k = 0; k < size; ++k)
+  {
+    double p[3];
+    points->GetPoint(ids[k], p);
+    cell.AddPoint(p);
+  }
+  for (const vtkBoundingBox& box : boxes)
+  {
+    if (box.Intersects(cell))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+// The cells near any of the boxes (all of them when `all`).
+vtkSmartPointer<vtkCellArray> KeepCells(
+  vtkCellArray* cells, vtkPoints* points, bool all, const std::vector<vtkBoundingBox>& boxes)
+{
+  auto kept = vtkSmartPointer<vtkCellArray>::New();
+  auto it = vtk::TakeSmartPointer(cells->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    it->GetCurrentCell(size, ids);
+    if (all || NearAny(points, size, ids, boxes))
+    {
+      kept->InsertNextCell(size, ids);
+    }
+  }
+  return kept;
+}
+
+// A piece's polygons and strips on its points, without arrays.
+vtkSmartPointer<vtkPolyData> Surface(
+  vtkPolyData* piece, bool all, const std::vector<vtkBoundingBox>& boxes)
+{
+  auto surface = vtkSmartPointer<vtkPolyData>::New();
+  surface->SetPoints(piece->GetPoints());
+  surface->SetPolys(KeepCells(piece->GetPolys(), piece->GetPoints(), all, boxes));
+  surface->SetStrips(KeepCells(piece->GetStrips(), piece->GetPoints(), all, boxes));
+  return surface;
+}
+}
+
+//------------------------------------------------------------------------------
+bool vtkApertureDistributedOccluders::IsDistributed(
+  vtkMultiProcessController* controller, vtkInformation* outInfo)
+{
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  return controller && controller->GetNumberOfProcesses() > 1 && outInfo &&
+    outInfo->Has(SDDP::UPDATE_NUMBER_OF_PIECES()) &&
+    outInfo->Get(SDDP::UPDATE_NUMBER_OF_PIECES()) > 1;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> vtkApertureDistributedOccluders::Gather(
+  vtkMultiProcessController* controller, const std::vector<vtkPolyData*>& local,
+  double maximumDistance)
+{
+  // Pieces with cells outside their points are refused by the caller; they send nothing.
+  std::vector<vtkPolyData*> valid;
+  for (vtkPolyData* piece : local)
+  {
+    if (piece && piece->GetPoints() && vtkApertureCellCheck::FindBadCell(piece).empty())
+    {
+      valid.push_back(piece);
+    }
+  }
+  const int ranks = controller->GetNumberOfProcesses();
+  const int rank = controller->GetLocalProcessId();
+  const bool all = !(maximumDistance < VTK_FLOAT_MAX);
+
+  // Every rank's bounds, grown by the distance: the cells another rank can see.
+  const vtkBoundingBox own = LocalBounds(valid);
+  double bounds[6];
+  own.GetBounds(bounds);
+  std::vector<double> allBounds(6 * ranks);
+  controller->AllGather(bounds, allBounds.data(), 6);
+  std::vector<vtkBoundingBox> others;
+  for (int r = 0; r < ranks && !all; ++r)
+  {
+    vtkBoundingBox box(&allBounds[6 * r]);
+    if (r != rank && box.IsValid())
+    {
+      box.Inflate(maximumDistance);
+      others.push_back(box);
+    }
+  }
+
+  vtkNew<vtkAppendPolyData> append;
+  for (vtkPolyData* piece : valid)
+  {
+    append->AddInputData(Surface(piece, all, others));
+  }
+  auto send = vtkSmartPointer<vtkPolyData>::New();
+  if (!valid.empty())
+  {
+    append->Update();
+    send->ShallowCopy(append->GetOutput());
+  }
+  std::vector<vtkSmartPointer<vtkDataObject>> received;
+  controller->AllGather(send, received);
+
+  vtkNew<vtkAppendPolyData> remote;
+  for (int r = 0; r < static_cast<int>(received.size()); ++r)
+  {
+    auto* surface = vtkPolyData::SafeDownCast(received[r]);
+    if (r != rank && surface && surface->GetNumberOfCells() > 0)
+    {
+      remote->AddInputData(surface);
+    }
+  }
+  auto result = vtkSmartPointer<vtkPolyData>::New();
+  if (remote->GetNumberOfInputConnections(0) > 0)
+  {
+    remote->Update();
+    result->ShallowCopy(remote->GetOutput());
+  }
+  return result;
+}
