@@ -13,9 +13,9 @@
 // Every rank takes a slab of the bunny's cells (by centroid x) with only the points they use,
 // runs vtkAperturePrecompute, vtkApertureReference and vtkOcclusionQueryVisibility's RayCast
 // backend on its piece (UpdatePiece(rank, ranks)), and sends the result to rank 0, which compares
-// every point with a serial run on the whole bunny, through a point id array. Then again with
-// every cell on rank 0 and empty pieces elsewhere, which must give empty outputs and rank 0 the
-// serial answer itself.
+// every point with a serial run on the whole bunny through a point id array; again with rays of
+// a bounded length (then only a halo of occluders travels); then with every cell on rank 0 and
+// empty pieces elsewhere, which must give empty outputs and rank 0 the serial answer itself.
 
 #include "vtkAperturePrecompute.h"
 #include "vtkApertureReference.h"
@@ -106,11 +106,14 @@ vtkSmartPointer<vtkPolyData> Piece(vtkPolyData* bunny, int rank, int ranks, bool
   return clean->GetOutput();
 }
 
-// The three filters on `input`, as one piece of `ranks` (serial when ranks is 1).
-std::vector<vtkSmartPointer<vtkPolyData>> Run(vtkPolyData* input, int rank, int ranks)
+// The three filters on `input`, as one piece of `ranks` (serial when ranks is 1); the apertures'
+// rays stop at `distance`.
+std::vector<vtkSmartPointer<vtkPolyData>> Run(
+  vtkPolyData* input, int rank, int ranks, double distance)
 {
   vtkNew<vtkAperturePrecompute> apertures;
   apertures->SetInputData(input);
+  apertures->SetMaximumDistance(distance);
   apertures->SetNumberOfRays(256);
   apertures->ComputeAmbientOcclusionOn();
   vtkNew<vtkApertureReference> reference;
@@ -217,12 +220,13 @@ bool Compare(const std::vector<vtkSmartPointer<vtkPolyData>>& pieces, vtkPolyDat
 
 // One distributed run; rank 0 gathers the pieces and compares them with `serial`.
 bool Distributed(vtkMPIController* controller, vtkPolyData* bunny,
-  const std::vector<vtkSmartPointer<vtkPolyData>>& serial, bool allOnZero, const char* run)
+  const std::vector<vtkSmartPointer<vtkPolyData>>& serial, bool allOnZero, double distance,
+  const char* run)
 {
   const int rank = controller->GetLocalProcessId();
   const int ranks = controller->GetNumberOfProcesses();
   vtkSmartPointer<vtkPolyData> piece = Piece(bunny, rank, ranks, allOnZero);
-  std::vector<vtkSmartPointer<vtkPolyData>> outputs = Run(piece, rank, ranks);
+  std::vector<vtkSmartPointer<vtkPolyData>> outputs = Run(piece, rank, ranks, distance);
   int ok = 1;
   if (allOnZero && rank > 0)
   {
@@ -275,13 +279,20 @@ int main(int argc, char* argv[])
     return 1;
   }
   vtkSmartPointer<vtkPolyData> bunny = ReadBunny(argv[1]);
-  std::vector<vtkSmartPointer<vtkPolyData>> serial;
+  // Unlimited rays, and rays of a tenth of the bunny's size (only the cells that near another
+  // rank's piece travel then).
+  const double unlimited = VTK_DOUBLE_MAX;
+  const double bounded = 0.1 * bunny->GetLength();
+  std::vector<vtkSmartPointer<vtkPolyData>> serial, serialBounded;
   if (rank == 0)
   {
-    serial = Run(Piece(bunny, 0, 1, true), 0, 1); // cleaned as the pieces are
+    vtkSmartPointer<vtkPolyData> whole = Piece(bunny, 0, 1, true); // cleaned as the pieces are
+    serial = Run(whole, 0, 1, unlimited);
+    serialBounded = Run(whole, 0, 1, bounded);
   }
-  bool ok = Distributed(controller, bunny, serial, false, "slabs");
-  ok = Distributed(controller, bunny, serial, true, "one rank") && ok;
+  bool ok = Distributed(controller, bunny, serial, false, unlimited, "slabs");
+  ok = Distributed(controller, bunny, serialBounded, false, bounded, "slabs, bounded rays") && ok;
+  ok = Distributed(controller, bunny, serial, true, unlimited, "one rank") && ok;
   controller->Finalize();
   return ok ? 0 : 1;
 }
