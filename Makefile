@@ -14,7 +14,7 @@ XVFB = xvfb-run -a -s "-screen 0 1920x1080x24"
 RENDER = $(XVFB) $(BUILD_DIR)/bin/aperture-render
 
 .PHONY: all deps configure build demo test pictures evaluation report fuzz sanitize install format \
-  clean
+  paraview paraview-test clean
 
 all: build
 
@@ -100,6 +100,26 @@ fuzz:
 	  (cd $(FUZZ_DIR) && ./bin/$$f -max_total_time=$(FUZZ_SECONDS) -seed=$(FUZZ_SEED) -timeout=10 \
 	    -rss_limit_mb=2048 -max_len=16384 -print_final_stats=1 corpus-$$f) || exit 1; \
 	done
+
+# The ParaView plugin in $(PARAVIEW_DIR): ParaView 5.11 installed without its Recommends (they
+# would remove VTK 9.1's development packages), python3-paraview's pvpython unpacked there, the
+# module built against ParaView's own VTK as ApertureLightingPlugin, and $(PARAVIEW_DIR)/env.sh,
+# which puts pvpython and pvbatch with the plugin on PATH. paraview-test runs its tests (pvpython,
+# a picture of the representation, mpirun -np 2 pvbatch) under one X server.
+PARAVIEW_DIR ?= build-paraview
+paraview:
+	@Utilities/install-dependencies.sh paraview
+	@mkdir -p $(PARAVIEW_DIR)
+	@Utilities/ParaView/unpack-pvpython.sh $(PARAVIEW_DIR)
+	@cmake -S . -B $(PARAVIEW_DIR) -DAPERTURELIGHTING_PARAVIEW_PLUGIN=ON \
+	  -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) > $(PARAVIEW_DIR)/configure.log 2>&1 \
+	  || { cat $(PARAVIEW_DIR)/configure.log; exit 1; }
+	@cmake --build $(PARAVIEW_DIR) --parallel $(JOBS)
+	@echo "ParaView plugin: $(abspath $(PARAVIEW_DIR))/lib/paraview-5.11/plugins/ApertureLightingPlugin"
+	@echo "pvpython and pvbatch with it: source $(abspath $(PARAVIEW_DIR))/env.sh"
+
+paraview-test: paraview
+	@cd $(PARAVIEW_DIR) && $(XVFB) ctest --output-on-failure
 
 # The whole ctest suite built with AddressSanitizer and UndefinedBehaviorSanitizer (Clang, one
 # shared runtime), in $(SANITIZE_DIR). The Python tests run an interpreter that preloads the

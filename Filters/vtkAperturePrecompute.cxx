@@ -290,6 +290,13 @@ bool vtkAperturePrecompute::vtkRun::CheckReceivers()
         return false;
       }
       r->Heights = this->Self->GetInputArrayToProcess(0, image);
+      // An array chosen by an empty name (ParaView's, before its input had arrays): the scalars.
+      vtkInformation* chosen = this->Self->GetInputArrayInformation(0);
+      if (!r->Heights && chosen->Has(vtkDataObject::FIELD_NAME()) &&
+        !*chosen->Get(vtkDataObject::FIELD_NAME()))
+      {
+        r->Heights = image->GetPointData()->GetScalars();
+      }
       if (!r->Heights)
       {
         vtkErrorWithObjectMacro(

@@ -13,8 +13,19 @@
 #include "vtkApertureRayRisks.h"
 #include "vtkApertureSurface.h"
 
+#include <atomic>
+
 namespace
 {
+// Set when this library's statics are destroyed, at exit: before those of Embree and TBB, which
+// were initialised before it (statics are destroyed in the reverse order), and before those of
+// libraries loaded earlier, such as ParaView's.
+std::atomic<bool> ProcessExiting{ false };
+struct ExitWatch
+{
+  ~ExitWatch() { ProcessExiting = true; }
+} TheExitWatch;
+
 std::string ErrorName(RTCError code)
 {
   switch (code)
@@ -40,6 +51,12 @@ std::string ErrorName(RTCError code)
 //------------------------------------------------------------------------------
 vtkApertureRayScene::~vtkApertureRayScene()
 {
+  // A scene deleted while the process exits (ParaView deletes its pipelines then) is left to
+  // the system: TBB, which Embree's release needs, may be finalised already.
+  if (ProcessExiting)
+  {
+    return;
+  }
   if (this->Scene)
   {
     rtcReleaseScene(this->Scene);

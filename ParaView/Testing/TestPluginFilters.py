@@ -1,0 +1,128 @@
+"""The plugin in pvpython: LoadPlugin, then every filter and reader through ParaView's proxies.
+
+    pvpython TestPluginFilters.py <plugin .so> <Testing/Data> <work dir>
+
+Checks, on real data: a convex sphere is open everywhere (ApertureRadius = pi/2); on the bunny,
+Aperture Precompute's AmbientOcclusion and Aperture Reference's sky irradiance (two independent
+ray casts) agree; Occlusion Query Visibility feeds Environment Visibility Lighting under an EXR
+opened with File > Open's reader lookup; a DEM (an ESRI grid written here) and the Terrain-RGB
+tile read as height fields and get apertures by horizon sweeps.
+"""
+
+import math
+import os
+import sys
+
+import numpy as np
+import paraview.simple as pvs
+from paraview import servermanager
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+FAILURES = []
+
+
+def check(ok, what):
+    print(("ok   " if ok else "FAIL ") + what)
+    if not ok:
+        FAILURES.append(what)
+
+
+def point_array(proxy, name):
+    data = servermanager.Fetch(proxy)
+    array = data.GetPointData().GetArray(name)
+    return None if array is None else vtk_to_numpy(array)
+
+
+def main(plugin, data, work):
+    pvs.LoadPlugin(plugin, remote=False)
+    os.makedirs(work, exist_ok=True)
+
+    # A sphere: nothing of it is in any of its points' hemispheres.
+    sphere = pvs.Sphere(ThetaResolution=24, PhiResolution=24)
+    open_sphere = pvs.AperturePrecompute(Input=sphere, NumberOfRays=64)
+    radius = point_array(open_sphere, "ApertureRadius")
+    check(radius is not None and np.allclose(radius, math.pi / 2, atol=1e-6),
+          "sphere: ApertureRadius is pi/2 everywhere")
+
+    # The bunny: the apertures' ambient occlusion against the reference's sky (same definition,
+    # independent rays: stratified 1024 against Monte-Carlo 1024).
+    bunny = pvs.OpenDataFile(os.path.join(data, "stanford-bunny.obj"))
+    apertures = pvs.AperturePrecompute(Input=bunny, NumberOfRays=1024, ComputeAmbientOcclusion=1)
+    reference = pvs.ApertureReference(Input=bunny, Source="Sky", NumberOfSamples=1024)
+    ao = point_array(apertures, "AmbientOcclusion")
+    sky = point_array(reference, "ReferenceIrradiance")
+    radius = point_array(apertures, "ApertureRadius")
+    check(ao is not None and sky is not None and len(sky) <= len(ao),
+          "bunny: AmbientOcclusion and ReferenceIrradiance computed")
+    if ao is not None and sky is not None:
+        # Creases may split points in the apertures' output: compare on the reference's points
+        # through their positions.
+        out = servermanager.Fetch(apertures)
+        ref = servermanager.Fetch(reference)
+        index = {tuple(np.round(ref.GetPoint(i), 7)): i for i in range(ref.GetNumberOfPoints())}
+        # The reference gives NaN to the file's points that no polygon uses.
+        pairs = [(ao[i], sky[index[key]]) for i in range(out.GetNumberOfPoints())
+                 if (key := tuple(np.round(out.GetPoint(i), 7))) in index
+                 and np.isfinite(sky[index[key]])]
+        difference = np.abs(np.array([a - s for a, s in pairs]))
+        check(len(pairs) >= 0.95 * np.isfinite(sky).sum() and difference.mean() < 0.02,
+              f"bunny: AO and reference sky agree on {len(pairs)} points "
+              f"(mean |difference| {difference.mean():.4f} < 0.02)")
+        check(0.3 < radius.min() and radius.max() <= math.pi / 2 + 1e-6 and radius.mean() < 1.45,
+              f"bunny: ApertureRadius in ({radius.min():.3f}, {radius.max():.3f}), "
+              f"mean {radius.mean():.3f}: closed in the creases, open elsewhere")
+
+    # Occlusion Query Visibility (ray cast) under an EXR opened by extension.
+    environment = pvs.OpenDataFile(os.path.join(data, "env", "forest.exr"))
+    check(environment is not None and environment.GetXMLName() == "OpenEXRReader",
+          "File > Open picks the OpenEXR reader for .exr")
+    visibility = pvs.OcclusionQueryVisibility(Input=bunny, Backend="Ray cast", Level=1)
+    lit = pvs.EnvironmentVisibilityLighting(Input=visibility, Environment=environment, UpAxis="Y")
+    irradiance = point_array(lit, "EnvironmentLighting")
+    check(irradiance is not None and irradiance.shape[1] == 3 and np.isfinite(irradiance).all()
+          and irradiance.min() >= 0 and irradiance.max() > 0,
+          "environment lighting: finite, non-negative RGB EnvironmentLighting per point")
+
+    # A DEM: a cone-shaped valley (slope 0.3) as an ESRI ASCII grid, through GDAL.
+    n = 48
+    grid = os.path.join(work, "valley.asc")
+    with open(grid, "w") as f:
+        f.write(f"ncols {n}\nnrows {n}\nxllcorner 0\nyllcorner 0\ncellsize 10\n"
+                "NODATA_value -9999\n")
+        for row in range(n):
+            f.write(" ".join(f"{3 * math.hypot(col - n / 2, row - n / 2):.2f}"
+                             for col in range(n)) + "\n")
+    dem = pvs.GDALDEMReader(FileName=grid)
+    valley = pvs.AperturePrecompute(Input=dem)
+    radius = point_array(valley, "ApertureRadius")
+    check(radius is not None and len(radius) == n * n, "DEM: one aperture per cell")
+    if radius is not None:
+        # The floor of a cone of slope 0.3 sees the sky above its walls: a cap of half-angle
+        # pi/2 - atan(0.3).
+        floor = radius.reshape(n, n)[n // 2, n // 2]
+        expected = math.pi / 2 - math.atan(0.3)
+        check(abs(floor - expected) < 0.03,
+              f"DEM: the valley floor's aperture {floor:.4f} is pi/2 - atan(slope) = "
+              f"{expected:.4f} (+-0.03)")
+
+    # The Terrain-RGB tile.
+    tile = pvs.TerrainRGBReader(FileName=os.path.join(data, "fuji-terrain-rgb.png"), Spacing=[30, 30])
+    radius = point_array(pvs.AperturePrecompute(Input=tile), "ApertureRadius")
+    check(radius is not None and radius.size > 0 and np.isfinite(radius).all()
+          and 0 <= radius.min() and radius.max() <= math.pi / 2 + 1e-6,
+          "Terrain-RGB: apertures in [0, pi/2] on every texel")
+
+    # A damaged input is an error, not a crash: a DEM file that is not one.
+    broken = os.path.join(work, "broken.asc")
+    with open(broken, "w") as f:
+        f.write("ncols 4\nnrows garbage\n")
+    bad = pvs.GDALDEMReader(FileName=broken)
+    bad.UpdatePipeline()
+    check(bad.GetDataInformation().GetNumberOfPoints() == 0, "a broken DEM gives no data")
+
+    print(f"{len(FAILURES)} failure(s)")
+    return 1 if FAILURES else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(*sys.argv[1:4]))
