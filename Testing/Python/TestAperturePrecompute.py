@@ -68,6 +68,15 @@ def main():
         failures.append(f"Terrain-RGB decoding: {elevation.min()} .. {elevation.max()}")
     if not (0.2 < r.min() and r.max() <= math.pi / 2 + 1e-6):
         failures.append(f"terrain apertures out of range: {r.min()} .. {r.max()}")
+    # An array chosen by an empty name (as ParaView sets it before the reader has run): the
+    # height field's scalars, the same caps.
+    unnamed = vtkAperturePrecompute()
+    unnamed.SetInputConnection(reader.GetOutputPort())
+    unnamed.SetInputArrayToProcess(0, 0, 0, 0, "")
+    unnamed.Update()
+    same = unnamed.GetImageDataOutput().GetPointData().GetArray("ApertureRadius")
+    if same is None or not np.array_equal(vtk_to_numpy(same), r):
+        failures.append("an empty array name must mean the height field's scalars")
     print("Fuji: mean aperture radius", r.mean(), "solid angle", vtkSphericalCap.SolidAngleFromCapRadius(float(r.mean())))
 
     # Bad input: an error event and an empty output, no exception.
