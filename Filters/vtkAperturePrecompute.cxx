@@ -25,6 +25,7 @@
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataSetAttributes.h"
+#include "vtkExtentTranslator.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -737,6 +738,20 @@ int vtkAperturePrecompute::RequestUpdateExtent(
   int extent[6], whole[6];
   outInfo->Get(SDDP::UPDATE_EXTENT(), extent);
   inInfo->Get(SDDP::WHOLE_EXTENT(), whole);
+  // One piece of several (a rank of a distributed run): the piece's extent is made here, from
+  // its input's extent grown by the halo; a piece of the input's own would have no halo.
+  const int pieces = outInfo->Has(SDDP::UPDATE_NUMBER_OF_PIECES())
+    ? outInfo->Get(SDDP::UPDATE_NUMBER_OF_PIECES())
+    : 1;
+  if (pieces > 1)
+  {
+    vtkNew<vtkExtentTranslator> translator;
+    translator->PieceToExtentThreadSafe(outInfo->Get(SDDP::UPDATE_PIECE_NUMBER()), pieces, 0, whole,
+      extent, vtkExtentTranslator::BLOCK_MODE, 0);
+    outInfo->Set(SDDP::UPDATE_EXTENT(), extent, 6);
+    inInfo->Set(SDDP::UPDATE_PIECE_NUMBER(), 0);
+    inInfo->Set(SDDP::UPDATE_NUMBER_OF_PIECES(), 1);
+  }
   if (extent[1] < extent[0] || extent[3] < extent[2])
   {
     inInfo->Set(SDDP::UPDATE_EXTENT(), extent, 6); // an empty piece needs nothing

@@ -281,8 +281,8 @@ public:
    * rank's polygons and strips as occluders (only those within MaximumDistance of this rank's
    * bounds when it is finite), so that each piece gets the serial answer; every rank must then
    * update the filter, and an empty piece gives an empty output. Height-field pieces need no
-   * gathering: they ask their input for a halo of MaximumDistance instead (all of the grid when
-   * it is unlimited).
+   * gathering: the filter makes a piece's extent (a block of the grid) and asks its input for it
+   * grown by MaximumDistance (all of the grid when that is unlimited).
    */
   virtual void SetController(vtkMultiProcessController* controller);
   vtkGetObjectMacro(Controller, vtkMultiProcessController);

@@ -7,10 +7,15 @@ rank 1's empty piece must give an empty output, not an error. The same bunny aft
 Data Set (a spatial split over the ranks) and Extract Surface gives each rank its piece;
 Aperture Precompute there gathers the other rank's surface as occluders. Rank 0 fetches both
 and compares every point through the ids Generate Ids gave it: mean |difference| of
-ApertureRadius <= 0.01 rad and 99th percentile <= 0.03 (issue 17's goals).
+ApertureRadius <= 0.01 rad and 99th percentile <= 0.03 (issue 17's goals). Then a DEM read in
+pieces (the GDAL reader splits its extent over the ranks) must give every rank its part of the
+grid, with the analytic aperture on a valley's floor.
 """
 
+import math
+import os
 import sys
+import tempfile
 
 import numpy as np
 import paraview.simple as pvs
@@ -33,6 +38,45 @@ def by_id(data):
     for point in np.unique(connectivity):
         values.setdefault(int(ids[point]), []).append(float(radius[point]))
     return values
+
+
+def height_field(rank, ranks):
+    """A DEM in pieces: a cone-shaped valley (slope 0.3) written by rank 0 as an ESRI grid. Each
+    rank must get a part of the grid (its extent, from the whole grid's horizons) and the floor
+    the analytic aperture pi/2 - atan(0.3)."""
+    process = servermanager.vtkProcessModule.GetProcessModule()
+    n = 48
+    grid = os.path.join(tempfile.gettempdir(), f"aperture-valley-{os.getppid()}.asc")
+    if rank == 0:
+        with open(grid, "w") as f:
+            f.write(f"ncols {n}\nnrows {n}\nxllcorner 0\nyllcorner 0\ncellsize 10\n"
+                    "NODATA_value -9999\n")
+            for row in range(n):
+                f.write(" ".join(f"{3 * math.hypot(col - n / 2, row - n / 2):.2f}"
+                                 for col in range(n)) + "\n")
+    process.GetGlobalController().Barrier()
+    valley = pvs.AperturePrecompute(Input=pvs.GDALDEMReader(FileName=grid))
+    valley.UpdatePipeline()
+    failures = []
+    local = local_points(valley)
+    print(f"rank {rank}: {local} of the DEM's {n * n} texels", flush=True)
+    if not 0 < local < n * n:
+        failures.append(f"rank {rank}: {local} texels of the DEM, not a part of it")
+    # The rank whose extent holds the floor checks it.
+    image = valley.GetClientSideObject().GetOutputDataObject(0)
+    extent = image.GetExtent()
+    if extent[0] <= n // 2 <= extent[1] and extent[2] <= n // 2 <= extent[3]:
+        radius = image.GetPointData().GetArray("ApertureRadius")
+        floor = radius.GetValue(image.ComputePointId([n // 2, n // 2, 0]))
+        expected = math.pi / 2 - math.atan(0.3)
+        print(f"rank {rank}: the DEM's floor has the aperture {floor:.4f}, analytic "
+              f"{expected:.4f}", flush=True)
+        if abs(floor - expected) > 0.03:
+            failures.append("the DEM's floor differs from the analytic aperture")
+    process.GetGlobalController().Barrier()
+    if rank == 0:
+        os.remove(grid)
+    return failures
 
 
 def main(plugin, data):
@@ -71,6 +115,7 @@ def main(plugin, data):
               f"{differences.max():.4f}", flush=True)
         if missing or mean > 0.01 or p99 > 0.03:
             failures.append("the distributed run differs from the serial one")
+    failures += height_field(rank, ranks)
     for failure in failures:
         print(f"FAIL rank {rank}: {failure}", flush=True)
     return 1 if failures else 0

@@ -16,6 +16,7 @@
 // every point with a serial run on the whole bunny through a point id array; again with rays of
 // a bounded length (then only a halo of occluders travels); then with every cell on rank 0 and
 // empty pieces elsewhere, which must give empty outputs and rank 0 the serial answer itself.
+// Last, the Fuji tile as a height field in pieces, whose extents must get the whole grid's caps.
 
 #include "vtkAperturePrecompute.h"
 #include "vtkApertureReference.h"
@@ -26,6 +27,7 @@
 #include "vtkCleanPolyData.h"
 #include "vtkDataArray.h"
 #include "vtkIdTypeArray.h"
+#include "vtkImageData.h"
 #include "vtkMPIController.h"
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
@@ -33,6 +35,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
+#include "vtkTerrainRGBReader.h"
 
 #include <algorithm>
 #include <cmath>
@@ -264,6 +267,56 @@ bool Distributed(vtkMPIController* controller, vtkPolyData* bunny,
   controller->AllReduce(&ok, &all, 1, vtkCommunicator::MIN_OP);
   return all == 1;
 }
+
+// A height field in pieces: each rank's extent of the Fuji tile (from its input grown by the
+// halo the filter asks for) against the same texels of the whole grid, computed serially.
+bool DistributedHeightField(
+  vtkMPIController* controller, const std::string& data, double distance, const char* run)
+{
+  const int rank = controller->GetLocalProcessId();
+  vtkNew<vtkTerrainRGBReader> reader;
+  reader->SetFileName((data + "/fuji-terrain-rgb.png").c_str());
+  reader->SetSpacing(60.0, 60.0);
+  vtkNew<vtkAperturePrecompute> whole;
+  whole->SetInputConnection(reader->GetOutputPort());
+  whole->SetMaximumDistance(distance);
+  whole->Update();
+  vtkNew<vtkAperturePrecompute> piece;
+  piece->SetInputConnection(reader->GetOutputPort());
+  piece->SetMaximumDistance(distance);
+  piece->UpdatePiece(rank, controller->GetNumberOfProcesses(), 0);
+  vtkImageData* expected = whole->GetImageDataOutput();
+  vtkImageData* got = piece->GetImageDataOutput();
+  vtkDataArray* expectedRadius = expected->GetPointData()->GetArray("ApertureRadius");
+  vtkDataArray* gotRadius = got->GetPointData()->GetArray("ApertureRadius");
+  std::vector<double> differences;
+  const int* extent = got->GetExtent();
+  for (int j = extent[2]; gotRadius && expectedRadius && j <= extent[3]; ++j)
+  {
+    for (int i = extent[0]; i <= extent[1]; ++i)
+    {
+      int ijk[3] = { i, j, 0 };
+      differences.push_back(std::abs(gotRadius->GetTuple1(got->ComputePointId(ijk)) -
+        expectedRadius->GetTuple1(expected->ComputePointId(ijk))));
+    }
+  }
+  int ok = !differences.empty() && got->GetNumberOfPoints() < expected->GetNumberOfPoints();
+  double mean = 0.0;
+  for (double d : differences)
+  {
+    mean += d / std::max<size_t>(differences.size(), 1);
+  }
+  const double largest =
+    differences.empty() ? 0.0 : *std::max_element(differences.begin(), differences.end());
+  ok = ok && mean <= 0.01 && largest <= 0.03;
+  std::printf("%s %s: rank %d's extent %d..%d x %d..%d of %lld texels, mean |difference| %.3g, "
+              "largest %.3g\n",
+    ok ? "ok  " : "FAIL", run, rank, extent[0], extent[1], extent[2], extent[3],
+    static_cast<long long>(expected->GetNumberOfPoints()), mean, largest);
+  int all = 0;
+  controller->AllReduce(&ok, &all, 1, vtkCommunicator::MIN_OP);
+  return all == 1;
+}
 }
 
 int main(int argc, char* argv[])
@@ -293,6 +346,8 @@ int main(int argc, char* argv[])
   bool ok = Distributed(controller, bunny, serial, false, unlimited, "slabs");
   ok = Distributed(controller, bunny, serialBounded, false, bounded, "slabs, bounded rays") && ok;
   ok = Distributed(controller, bunny, serial, true, unlimited, "one rank") && ok;
+  ok = DistributedHeightField(controller, argv[1], unlimited, "height field") && ok;
+  ok = DistributedHeightField(controller, argv[1], 3000.0, "height field, 3 km halo") && ok;
   controller->Finalize();
   return ok ? 0 : 1;
 }
