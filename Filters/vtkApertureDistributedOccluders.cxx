@@ -23,6 +23,8 @@
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
+#include <limits>
+
 namespace
 {
 // Bounds of the finite points of valid pieces (uninitialised when there are none).
@@ -105,6 +107,18 @@ bool vtkApertureDistributedOccluders::IsDistributed(
   return controller && controller->GetNumberOfProcesses() > 1 && outInfo &&
     outInfo->Has(SDDP::UPDATE_NUMBER_OF_PIECES()) &&
     outInfo->Get(SDDP::UPDATE_NUMBER_OF_PIECES()) > 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkApertureDistributedOccluders::GatherForPiece(vtkMultiProcessController* controller,
+  vtkInformation* outInfo, vtkPolyData* input, vtkSmartPointer<vtkPolyData>& remote)
+{
+  if (!IsDistributed(controller, outInfo))
+  {
+    return false;
+  }
+  remote = Gather(controller, { input }, std::numeric_limits<double>::infinity());
+  return true;
 }
 
 //------------------------------------------------------------------------------

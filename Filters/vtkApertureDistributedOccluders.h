@@ -49,6 +49,13 @@ public:
    */
   static vtkSmartPointer<vtkPolyData> Gather(vtkMultiProcessController* controller,
     const std::vector<vtkPolyData*>& local, double maximumDistance);
+
+  /**
+   * For a filter of one surface: when the request is distributed, the other ranks' whole
+   * surfaces into `remote` (collective), and true.
+   */
+  static bool GatherForPiece(vtkMultiProcessController* controller, vtkInformation* outInfo,
+    vtkPolyData* input, vtkSmartPointer<vtkPolyData>& remote);
 };
 
 #endif

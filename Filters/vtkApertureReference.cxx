@@ -224,16 +224,12 @@ int vtkApertureReference::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   // A distributed run: the other ranks' surfaces occlude too (collective, before any check).
   vtkSmartPointer<vtkPolyData> remote;
-  if (vtkApertureDistributedOccluders::IsDistributed(
-        this->Controller, outputVector->GetInformationObject(0)))
+  if (vtkApertureDistributedOccluders::GatherForPiece(
+        this->Controller, outputVector->GetInformationObject(0), input, remote) &&
+    (!input || input->GetNumberOfPoints() == 0))
   {
-    remote = vtkApertureDistributedOccluders::Gather(
-      this->Controller, { input }, std::numeric_limits<double>::infinity());
-    if (!input || input->GetNumberOfPoints() == 0)
-    {
-      output->Initialize(); // an empty piece
-      return 1;
-    }
+    output->Initialize(); // an empty piece
+    return 1;
   }
   if (!input || input->GetNumberOfPoints() == 0)
   {

@@ -20,6 +20,7 @@ import tempfile
 import numpy as np
 import paraview.simple as pvs
 from paraview import servermanager
+from aperture_test_data import write_valley
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 
@@ -48,12 +49,7 @@ def height_field(rank, ranks):
     n = 48
     grid = os.path.join(tempfile.gettempdir(), f"aperture-valley-{os.getppid()}.asc")
     if rank == 0:
-        with open(grid, "w") as f:
-            f.write(f"ncols {n}\nnrows {n}\nxllcorner 0\nyllcorner 0\ncellsize 10\n"
-                    "NODATA_value -9999\n")
-            for row in range(n):
-                f.write(" ".join(f"{3 * math.hypot(col - n / 2, row - n / 2):.2f}"
-                                 for col in range(n)) + "\n")
+        write_valley(grid, n, 0.3)
     process.GetGlobalController().Barrier()
     valley = pvs.AperturePrecompute(Input=pvs.GDALDEMReader(FileName=grid))
     valley.UpdatePipeline()
@@ -68,7 +64,7 @@ def height_field(rank, ranks):
     if extent[0] <= n // 2 <= extent[1] and extent[2] <= n // 2 <= extent[3]:
         radius = image.GetPointData().GetArray("ApertureRadius")
         floor = radius.GetValue(image.ComputePointId([n // 2, n // 2, 0]))
-        expected = math.pi / 2 - math.atan(0.3)
+        expected = math.pi / 2 - math.atan(0.3)  # write_valley's floor
         print(f"rank {rank}: the DEM's floor has the aperture {floor:.4f}, analytic "
               f"{expected:.4f}", flush=True)
         if abs(floor - expected) > 0.03:

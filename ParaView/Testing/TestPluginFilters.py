@@ -16,6 +16,7 @@ import sys
 import numpy as np
 import paraview.simple as pvs
 from paraview import servermanager
+from aperture_test_data import write_valley
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 FAILURES = []
@@ -86,12 +87,7 @@ def main(plugin, data, work):
     # A DEM: a cone-shaped valley (slope 0.3) as an ESRI ASCII grid, through GDAL.
     n = 48
     grid = os.path.join(work, "valley.asc")
-    with open(grid, "w") as f:
-        f.write(f"ncols {n}\nnrows {n}\nxllcorner 0\nyllcorner 0\ncellsize 10\n"
-                "NODATA_value -9999\n")
-        for row in range(n):
-            f.write(" ".join(f"{3 * math.hypot(col - n / 2, row - n / 2):.2f}"
-                             for col in range(n)) + "\n")
+    expected = write_valley(grid, n, 0.3)
     dem = pvs.GDALDEMReader(FileName=grid)
     valley = pvs.AperturePrecompute(Input=dem)
     radius = point_array(valley, "ApertureRadius")
@@ -100,7 +96,6 @@ def main(plugin, data, work):
         # The floor of a cone of slope 0.3 sees the sky above its walls: a cap of half-angle
         # pi/2 - atan(0.3).
         floor = radius.reshape(n, n)[n // 2, n // 2]
-        expected = math.pi / 2 - math.atan(0.3)
         check(abs(floor - expected) < 0.03,
               f"DEM: the valley floor's aperture {floor:.4f} is pi/2 - atan(slope) = "
               f"{expected:.4f} (+-0.03)")
