@@ -164,6 +164,119 @@ private:
   int Source, Components;
   double LightScale;
 };
+
+// The settings RequestData needs, and a unit `light` direction for the LIGHT source; false with
+// an error.
+bool CheckSettings(vtkApertureReference* self, vtkPolyData* input, double light[3])
+{
+  if (!input || input->GetNumberOfPoints() == 0)
+  {
+    vtkErrorWithObjectMacro(
+      self, "The input is empty: there are no points to compute a reference for.");
+    return false;
+  }
+  const double* given = self->GetLightDirection();
+  std::copy(given, given + 3, light);
+  if (self->GetSource() == vtkApertureReference::LIGHT &&
+    !(std::isfinite(vtkMath::Norm(light)) && vtkMath::Normalize(light) > 0.0))
+  {
+    vtkErrorWithObjectMacro(self,
+      "LightDirection (" << given[0] << ", " << given[1] << ", " << given[2]
+                         << ") is not a direction: it must be finite and not zero.");
+    return false;
+  }
+  vtkEnvironmentMap* environment = self->GetEnvironment();
+  if (self->GetSource() == vtkApertureReference::ENVIRONMENT &&
+    (!environment || !environment->GetImage()))
+  {
+    vtkErrorWithObjectMacro(
+      self, "The ENVIRONMENT source needs an environment with an image (SetEnvironment()).");
+    return false;
+  }
+  const char* irradiance = self->GetIrradianceArrayName();
+  const char* noise = self->GetNoiseArrayName();
+  if (!irradiance || !*irradiance || !noise || !*noise)
+  {
+    vtkErrorWithObjectMacro(
+      self, "The output arrays need names (IrradianceArrayName, NoiseArrayName).");
+    return false;
+  }
+  return true;
+}
+
+// The occluder port's surfaces, and the other ranks' in a distributed run.
+std::vector<vtkPolyData*> Occluders(vtkInformationVector* occluderInfo, vtkPolyData* remote)
+{
+  std::vector<vtkPolyData*> occluders;
+  for (int i = 0; i < occluderInfo->GetNumberOfInformationObjects(); ++i)
+  {
+    if (auto* occluder = vtkPolyData::GetData(occluderInfo, i))
+    {
+      occluders.push_back(occluder);
+    }
+  }
+  if (remote && remote->GetNumberOfCells() > 0)
+  {
+    occluders.push_back(remote);
+  }
+  return occluders;
+}
+
+// Every surface point's estimate and noise, in batches between progress events; false with an
+// error when Embree failed, `aborted` when the filter was.
+bool Trace(vtkApertureReference* self, const vtkApertureSurface& receivers,
+  vtkApertureRayScene& scene, const double light[3], float* irradiance, float* noise, bool& aborted)
+{
+  const bool fromLight = self->GetSource() == vtkApertureReference::LIGHT;
+  if (self->GetSource() == vtkApertureReference::ENVIRONMENT)
+  {
+    // Looking one direction up builds the environment's working image before threads share it.
+    double probe[3];
+    const double up[3] = { 0.0, 0.0, 1.0 };
+    self->GetEnvironment()->Radiance(up, probe);
+  }
+  const vtkApertureRaySampler sampler(self->GetNumberOfSamples(), self->GetSeed(), false,
+    fromLight ? vtkApertureRaySampler::UNIFORM_CAP : vtkApertureRaySampler::COSINE_HEMISPHERE,
+    vtkSphericalCap::ClampLightRadius(self->GetLightRadius()));
+  const Estimate estimate(
+    self, receivers, scene, sampler, light, self->GetEnvironment(), irradiance, noise);
+  const vtkIdType n = receivers.GetNumberOfPoints();
+  self->UpdateProgress(0.0);
+  for (vtkIdType first = 0; first < n && !aborted; first += Batch)
+  {
+    vtkSMPTools::For(first, std::min(n, first + Batch), 64, estimate);
+    self->UpdateProgress(
+      static_cast<double>(std::min(n, first + Batch)) / std::max<vtkIdType>(n, 1));
+    aborted = self->GetAbortExecute() != 0;
+  }
+  const std::string embreeError = scene.GetError();
+  if (!embreeError.empty())
+  {
+    vtkErrorWithObjectMacro(self, "Embree failed while tracing: " << embreeError);
+    return false;
+  }
+  return true;
+}
+
+// The output's arrays, per output point: NaN where there is no estimate.
+void WriteArrays(vtkApertureReference* self, const vtkApertureSurface& receivers,
+  const std::vector<vtkIdType>& points, int components, const std::vector<float>& irradiance,
+  const std::vector<float>& noise, vtkPointData* pd)
+{
+  const float nan[3] = { std::numeric_limits<float>::quiet_NaN(),
+    std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::quiet_NaN() };
+  const float zero[3] = { 0.0f, 0.0f, 0.0f };
+  if (receivers.NormalsComputed)
+  {
+    const float* normals = receivers.GetNormal(0);
+    pd->SetNormals(vtkApertureSurface::Scatter(
+      "Normals", 3, normals, normals + 3 * receivers.GetNumberOfPoints(), points, zero, zero));
+  }
+  pd->AddArray(vtkApertureSurface::Scatter(self->GetIrradianceArrayName(), components,
+    irradiance.data(), irradiance.data() + irradiance.size(), points, nan, nan));
+  pd->AddArray(vtkApertureSurface::Scatter(self->GetNoiseArrayName(), components, noise.data(),
+    noise.data() + noise.size(), points, nan, nan));
+}
 }
 
 //------------------------------------------------------------------------------
@@ -231,49 +344,17 @@ int vtkApertureReference::RequestData(
     output->Initialize(); // an empty piece
     return 1;
   }
-  if (!input || input->GetNumberOfPoints() == 0)
+  // 1. The settings and the surfaces, checked; one Embree scene.
+  double light[3];
+  if (!CheckSettings(this, input, light))
   {
-    vtkErrorMacro("The input is empty: there are no points to compute a reference for.");
     return 0;
-  }
-  double light[3] = { this->LightDirection[0], this->LightDirection[1], this->LightDirection[2] };
-  if (this->Source == LIGHT &&
-    !(std::isfinite(vtkMath::Norm(light)) && vtkMath::Normalize(light) > 0.0))
-  {
-    vtkErrorMacro("LightDirection (" << this->LightDirection[0] << ", " << this->LightDirection[1]
-                                     << ", " << this->LightDirection[2]
-                                     << ") is not a direction: it must be finite and not zero.");
-    return 0;
-  }
-  if (this->Source == ENVIRONMENT && (!this->Environment || !this->Environment->GetImage()))
-  {
-    vtkErrorMacro("The ENVIRONMENT source needs an environment with an image (SetEnvironment()).");
-    return 0;
-  }
-  if (!this->IrradianceArrayName || !*this->IrradianceArrayName || !this->NoiseArrayName ||
-    !*this->NoiseArrayName)
-  {
-    vtkErrorMacro("The output arrays need names (IrradianceArrayName, NoiseArrayName).");
-    return 0;
-  }
-
-  std::vector<vtkPolyData*> occluders;
-  for (int i = 0; i < inputVector[1]->GetNumberOfInformationObjects(); ++i)
-  {
-    if (auto* occluder = vtkPolyData::GetData(inputVector[1], i))
-    {
-      occluders.push_back(occluder);
-    }
-  }
-  if (remote && remote->GetNumberOfCells() > 0)
-  {
-    occluders.push_back(remote);
   }
   std::string error;
   vtkApertureSurface receivers;
   std::vector<vtkApertureSurface> occluderSurfaces;
-  if (!vtkApertureSurface::SetScene(
-        input, occluders, this->FeatureAngle, this->RayOffset, receivers, occluderSurfaces, error))
+  if (!vtkApertureSurface::SetScene(input, Occluders(inputVector[1], remote), this->FeatureAngle,
+        this->RayOffset, receivers, occluderSurfaces, error))
   {
     vtkErrorMacro(<< error);
     return 0;
@@ -284,59 +365,20 @@ int vtkApertureReference::RequestData(
     vtkErrorMacro("Embree failed: " << scene.GetError());
     return 0;
   }
-
-  const vtkIdType n = receivers.GetNumberOfPoints();
+  // 2. The estimates of every surface point, in batches between progress events.
   const int components = this->Source == ENVIRONMENT ? 3 : 1;
-  std::vector<float> irradiance(components * n), noise(components * n);
-  if (this->Source == ENVIRONMENT)
+  std::vector<float> irradiance(components * receivers.GetNumberOfPoints());
+  std::vector<float> noise(irradiance.size());
+  bool aborted = false;
+  if (!Trace(this, receivers, scene, light, irradiance.data(), noise.data(), aborted) || aborted)
   {
-    // Looking one direction up builds the environment's working image before threads share it.
-    double probe[3];
-    const double up[3] = { 0.0, 0.0, 1.0 };
-    this->Environment->Radiance(up, probe);
+    output->Initialize();
+    return aborted ? 1 : 0;
   }
-  const vtkApertureRaySampler sampler(this->NumberOfSamples, this->Seed, false,
-    this->Source == LIGHT ? vtkApertureRaySampler::UNIFORM_CAP
-                          : vtkApertureRaySampler::COSINE_HEMISPHERE,
-    vtkSphericalCap::ClampLightRadius(this->LightRadius));
-  const Estimate estimate(
-    this, receivers, scene, sampler, light, this->Environment, irradiance.data(), noise.data());
-  this->UpdateProgress(0.0);
-  for (vtkIdType first = 0; first < n; first += Batch)
-  {
-    vtkSMPTools::For(first, std::min(n, first + Batch), 64, estimate);
-    this->UpdateProgress(
-      static_cast<double>(std::min(n, first + Batch)) / std::max<vtkIdType>(n, 1));
-    if (this->GetAbortExecute())
-    {
-      output->Initialize();
-      return 1;
-    }
-  }
-  const std::string embreeError = scene.GetError();
-  if (!embreeError.empty())
-  {
-    vtkErrorMacro("Embree failed while tracing: " << embreeError);
-    return 0;
-  }
-
-  // Per output point (split at creases): NaN where there is no estimate.
+  // 3. The arrays on the output's points (split at creases).
   std::vector<vtkIdType> points;
   receivers.MakeOutput(input, output, points);
-  vtkPointData* pd = output->GetPointData();
-  const float nan[3] = { std::numeric_limits<float>::quiet_NaN(),
-    std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::quiet_NaN() };
-  const float zero[3] = { 0.0f, 0.0f, 0.0f };
-  if (receivers.NormalsComputed)
-  {
-    const float* normals = receivers.GetNormal(0);
-    pd->SetNormals(
-      vtkApertureSurface::Scatter("Normals", 3, normals, normals + 3 * n, points, zero, zero));
-  }
-  pd->AddArray(vtkApertureSurface::Scatter(this->IrradianceArrayName, components, irradiance.data(),
-    irradiance.data() + irradiance.size(), points, nan, nan));
-  pd->AddArray(vtkApertureSurface::Scatter(
-    this->NoiseArrayName, components, noise.data(), noise.data() + noise.size(), points, nan, nan));
+  WriteArrays(this, receivers, points, components, irradiance, noise, output->GetPointData());
   return 1;
 }
 
