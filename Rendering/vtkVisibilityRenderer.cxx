@@ -135,6 +135,50 @@ bool DepthTarget(vtkOpenGLRenderWindow* window, vtkSmartPointer<vtkTextureObject
   return ready;
 }
 
+// Each direction with its opposite (-1 when the list lacks it; a lightsphere never does).
+std::vector<std::pair<size_t, long>> OppositePairs(
+  const std::vector<std::array<double, 3>>& directions)
+{
+  std::vector<std::pair<size_t, long>> pairs;
+  std::vector<bool> taken(directions.size(), false);
+  for (size_t i = 0; i < directions.size(); ++i)
+  {
+    if (taken[i])
+    {
+      continue;
+    }
+    long opposite = -1;
+    for (size_t j = i + 1; j < directions.size() && opposite < 0; ++j)
+    {
+      const auto& a = directions[i];
+      const auto& b = directions[j];
+      if (!taken[j] && a[0] * b[0] + a[1] * b[1] + a[2] * b[2] < -1.0 + 1e-12)
+      {
+        opposite = static_cast<long>(j);
+        taken[j] = true;
+      }
+    }
+    taken[i] = true;
+    pairs.emplace_back(i, opposite);
+  }
+  return pairs;
+}
+
+// The pairs from `first` on that fit the storage buffer's CompareBatch slots (a pair takes two);
+// `first` moves past them.
+std::vector<std::pair<size_t, long>> TakeBatch(
+  const std::vector<std::pair<size_t, long>>& pairs, size_t& first)
+{
+  std::vector<std::pair<size_t, long>> batch;
+  size_t slots = 0;
+  while (first < pairs.size() && slots + (pairs[first].second >= 0 ? 2 : 1) <= CompareBatch)
+  {
+    slots += pairs[first].second >= 0 ? 2 : 1;
+    batch.push_back(pairs[first++]);
+  }
+  return batch;
+}
+
 // The depth pass's state, restored when the object goes.
 struct PassState
 {
@@ -402,39 +446,51 @@ bool vtkVisibilityRenderer::DepthCompare(const std::vector<std::array<double, 3>
     return false;
   }
   this->Window->MakeCurrent();
-  if (!this->PreparePairs(error))
+  const int words = static_cast<int>((this->NumberOfReceivers + 31) / 32);
+  if (!this->PreparePairs(error) || !this->PrepareCompare(subset, words, error))
   {
     return false;
   }
+  const std::vector<std::pair<size_t, long>> pairs = OppositePairs(directions);
+  std::vector<Bits> results(directions.size());
+  size_t done = 0;
+  bool stopped = false;
   vtkOpenGLState* state = this->Window->GetState();
-  vtkOpenGLShaderCache* cache = this->Window->GetShaderCache();
-
-  // Each direction with its opposite, when the list has it (a lightsphere always does).
-  std::vector<std::pair<size_t, long>> pairs;
-  std::vector<bool> taken(directions.size(), false);
-  for (size_t i = 0; i < directions.size(); ++i)
+  state->PushFramebufferBindings();
   {
-    if (taken[i])
+    PassState pass(state);
+    vtkOpenGLState::ScopedglBlendFuncSeparate blendFunction(state);
+    state->vtkglViewport(0, 0, this->Resolution, this->Resolution);
+    for (size_t first = 0; first < pairs.size() && !stopped;)
     {
-      continue;
+      // As many pairs as the storage buffer has slots for: each direction is drawn and tested
+      // into its slot, then all slots are read back at once.
+      const std::vector<std::pair<size_t, long>> batch = TakeBatch(pairs, first);
+      std::vector<std::pair<size_t, int>> slotOf =
+        this->CompareBatchOfPairs(directions, batch, words, subset); // direction, slot
+      this->ReadSlots(slotOf, words, results);
+      done += slotOf.size();
+      stopped = progress && !progress(done);
     }
-    long opposite = -1;
-    for (size_t j = i + 1; j < directions.size() && opposite < 0; ++j)
-    {
-      const auto& a = directions[i];
-      const auto& b = directions[j];
-      if (!taken[j] && a[0] * b[0] + a[1] * b[1] + a[2] * b[2] < -1.0 + 1e-12)
-      {
-        opposite = static_cast<long>(j);
-        taken[j] = true;
-      }
-    }
-    taken[i] = true;
-    pairs.emplace_back(i, opposite);
   }
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  state->PopFramebufferBindings();
+  if (stopped)
+  {
+    error = "stopped";
+    return false;
+  }
+  for (Bits& bits : results)
+  {
+    visible.push_back(std::move(bits));
+  }
+  return true;
+}
 
-  const vtkIdType n = this->NumberOfReceivers;
-  const int words = static_cast<int>((n + 31) / 32);
+//------------------------------------------------------------------------------
+bool vtkVisibilityRenderer::PrepareCompare(
+  const std::vector<std::uint32_t>* subset, int words, std::string& error)
+{
   if (subset)
   {
     // The receivers to test, drawn by index: gl_VertexID is then the receiver's id.
@@ -455,134 +511,128 @@ bool vtkVisibilityRenderer::DepthCompare(const std::vector<std::array<double, 3>
     glGenBuffers(1, &this->Storage);
   }
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Storage);
-  const std::vector<std::uint32_t> zeros(static_cast<size_t>(words) * CompareBatch, 0u);
-  glBufferData(
-    GL_SHADER_STORAGE_BUFFER, zeros.size() * sizeof(std::uint32_t), nullptr, GL_DYNAMIC_READ);
-
-  std::vector<Bits> results(directions.size());
-  size_t done = 0;
-  bool stopped = false;
-  state->PushFramebufferBindings();
-  {
-    PassState pass(state);
-    vtkOpenGLState::ScopedglBlendFuncSeparate blendFunction(state);
-    GLint equationRGB = GL_FUNC_ADD, equationAlpha = GL_FUNC_ADD;
-    glGetIntegerv(GL_BLEND_EQUATION_RGB, &equationRGB);
-    glGetIntegerv(GL_BLEND_EQUATION_ALPHA, &equationAlpha);
-    state->vtkglViewport(0, 0, this->Resolution, this->Resolution);
-    std::vector<std::uint32_t> result(zeros.size());
-    float matrix[16];
-    for (size_t first = 0; first < pairs.size() && !stopped;)
-    {
-      // As many pairs as the storage buffer has slots for.
-      std::vector<std::pair<size_t, long>> batch;
-      size_t slots = 0;
-      while (first < pairs.size() && slots + (pairs[first].second >= 0 ? 2 : 1) <= CompareBatch)
-      {
-        slots += pairs[first].second >= 0 ? 2 : 1;
-        batch.push_back(pairs[first++]);
-      }
-      glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Storage);
-      glBufferSubData(
-        GL_SHADER_STORAGE_BUFFER, 0, zeros.size() * sizeof(std::uint32_t), zeros.data());
-      std::vector<std::pair<size_t, int>> slotOf; // direction, slot
-      int slot = 0;
-      for (const auto& pair : batch)
-      {
-        // Nearest and farthest surfaces along the direction.
-        LightMatrix(directions[pair.first], this->Radius, matrix);
-        this->PairFramebuffer->Bind();
-        this->PairFramebuffer->ActivateDrawBuffers(2);
-        cache->ReadyShaderProgram(this->PairProgram);
-        this->PairProgram->SetUniformMatrix4x4("clipMatrix", matrix);
-        this->PairProgram->SetUniformf("offsetFactor", this->OffsetFactor);
-        this->PairProgram->SetUniformf("offsetUnits", this->OffsetUnits);
-        state->vtkglDisable(GL_DEPTH_TEST);
-        state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        const float far = 1.0f, near = 0.0f;
-        glClearBufferfv(GL_COLOR, 0, &far);
-        glClearBufferfv(GL_COLOR, 1, &near);
-        state->vtkglEnable(GL_BLEND);
-        state->vtkglBlendFunc(GL_ONE, GL_ONE);
-        glBlendEquationi(0, GL_MIN);
-        glBlendEquationi(1, GL_MAX);
-        this->PairVAO->Bind();
-        this->Triangles->Bind();
-        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(3 * this->NumberOfTriangles),
-          GL_UNSIGNED_INT, nullptr);
-        this->PairVAO->Release();
-        glBlendEquationSeparate(equationRGB, equationAlpha);
-        state->vtkglDisable(GL_BLEND);
-        state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        ++this->DepthPasses;
-
-        // The test, nothing rasterised.
-        state->PopFramebufferBindings();
-        state->PushFramebufferBindings();
-        const int opposite = pair.second >= 0 ? slot + 1 : -1;
-        cache->ReadyShaderProgram(this->CompareProgram);
-        this->Nearest->Activate();
-        this->Farthest->Activate();
-        this->CompareProgram->SetUniformi("nearestMap", this->Nearest->GetTextureUnit());
-        this->CompareProgram->SetUniformi("farthestMap", this->Farthest->GetTextureUnit());
-        this->CompareProgram->SetUniformMatrix4x4("lightMatrix", matrix);
-        this->CompareProgram->SetUniformi("resolution", this->Resolution);
-        this->CompareProgram->SetUniformi("slot", slot);
-        this->CompareProgram->SetUniformi("opposite", opposite);
-        this->CompareProgram->SetUniformi("words", words);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->Storage);
-        glEnable(GL_RASTERIZER_DISCARD);
-        this->CompareVAO->Bind();
-        if (!subset)
-        {
-          glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(n));
-        }
-        else if (!subset->empty())
-        {
-          this->Subset->Bind();
-          glDrawElements(GL_POINTS, static_cast<GLsizei>(subset->size()), GL_UNSIGNED_INT, nullptr);
-        }
-        this->CompareVAO->Release();
-        glDisable(GL_RASTERIZER_DISCARD);
-        this->Farthest->Deactivate();
-        this->Nearest->Deactivate();
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-        slotOf.emplace_back(pair.first, slot);
-        if (pair.second >= 0)
-        {
-          slotOf.emplace_back(static_cast<size_t>(pair.second), slot + 1);
-        }
-        slot += pair.second >= 0 ? 2 : 1;
-      }
-      glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Storage);
-      glGetBufferSubData(
-        GL_SHADER_STORAGE_BUFFER, 0, result.size() * sizeof(std::uint32_t), result.data());
-      for (const auto& entry : slotOf)
-      {
-        Bits bits((n + 63) / 64, 0);
-        const std::uint32_t* row = result.data() + entry.second * words;
-        for (int w = 0; w < words; ++w)
-        {
-          bits[w / 2] |= std::uint64_t(row[w]) << (32 * (w % 2));
-        }
-        results[entry.first] = std::move(bits);
-      }
-      done += slotOf.size();
-      stopped = progress && !progress(done);
-    }
-  }
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  state->PopFramebufferBindings();
-  if (stopped)
-  {
-    error = "stopped";
-    return false;
-  }
-  for (Bits& bits : results)
-  {
-    visible.push_back(std::move(bits));
-  }
+  glBufferData(GL_SHADER_STORAGE_BUFFER,
+    static_cast<GLsizeiptr>(words) * CompareBatch * sizeof(std::uint32_t), nullptr,
+    GL_DYNAMIC_READ);
   return true;
+}
+
+//------------------------------------------------------------------------------
+std::vector<std::pair<size_t, int>> vtkVisibilityRenderer::CompareBatchOfPairs(
+  const std::vector<std::array<double, 3>>& directions,
+  const std::vector<std::pair<size_t, long>>& batch, int words,
+  const std::vector<std::uint32_t>* subset)
+{
+  const std::vector<std::uint32_t> zeros(static_cast<size_t>(words) * CompareBatch, 0u);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Storage);
+  glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, zeros.size() * sizeof(std::uint32_t), zeros.data());
+  std::vector<std::pair<size_t, int>> slotOf;
+  int slot = 0;
+  float matrix[16];
+  for (const auto& pair : batch)
+  {
+    LightMatrix(directions[pair.first], this->Radius, matrix);
+    this->DrawNearestFarthest(matrix);
+    const int opposite = pair.second >= 0 ? slot + 1 : -1;
+    this->CompareReceivers(matrix, slot, opposite, words, subset);
+    slotOf.emplace_back(pair.first, slot);
+    if (pair.second >= 0)
+    {
+      slotOf.emplace_back(static_cast<size_t>(pair.second), opposite);
+    }
+    slot += pair.second >= 0 ? 2 : 1;
+  }
+  return slotOf;
+}
+
+//------------------------------------------------------------------------------
+void vtkVisibilityRenderer::DrawNearestFarthest(const float matrix[16])
+{
+  vtkOpenGLState* state = this->Window->GetState();
+  GLint equationRGB = GL_FUNC_ADD, equationAlpha = GL_FUNC_ADD;
+  glGetIntegerv(GL_BLEND_EQUATION_RGB, &equationRGB);
+  glGetIntegerv(GL_BLEND_EQUATION_ALPHA, &equationAlpha);
+  this->PairFramebuffer->Bind();
+  this->PairFramebuffer->ActivateDrawBuffers(2);
+  this->Window->GetShaderCache()->ReadyShaderProgram(this->PairProgram);
+  this->PairProgram->SetUniformMatrix4x4("clipMatrix", const_cast<float*>(matrix));
+  this->PairProgram->SetUniformf("offsetFactor", this->OffsetFactor);
+  this->PairProgram->SetUniformf("offsetUnits", this->OffsetUnits);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  const float far = 1.0f, near = 0.0f;
+  glClearBufferfv(GL_COLOR, 0, &far);
+  glClearBufferfv(GL_COLOR, 1, &near);
+  state->vtkglEnable(GL_BLEND);
+  state->vtkglBlendFunc(GL_ONE, GL_ONE);
+  glBlendEquationi(0, GL_MIN);
+  glBlendEquationi(1, GL_MAX);
+  this->PairVAO->Bind();
+  this->Triangles->Bind();
+  glDrawElements(
+    GL_TRIANGLES, static_cast<GLsizei>(3 * this->NumberOfTriangles), GL_UNSIGNED_INT, nullptr);
+  this->PairVAO->Release();
+  glBlendEquationSeparate(equationRGB, equationAlpha);
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  ++this->DepthPasses;
+}
+
+//------------------------------------------------------------------------------
+void vtkVisibilityRenderer::CompareReceivers(const float matrix[16], int slot, int opposite,
+  int words, const std::vector<std::uint32_t>* subset)
+{
+  // Back to the window's framebuffer: nothing is rasterised.
+  vtkOpenGLState* state = this->Window->GetState();
+  state->PopFramebufferBindings();
+  state->PushFramebufferBindings();
+  this->Window->GetShaderCache()->ReadyShaderProgram(this->CompareProgram);
+  this->Nearest->Activate();
+  this->Farthest->Activate();
+  this->CompareProgram->SetUniformi("nearestMap", this->Nearest->GetTextureUnit());
+  this->CompareProgram->SetUniformi("farthestMap", this->Farthest->GetTextureUnit());
+  this->CompareProgram->SetUniformMatrix4x4("lightMatrix", const_cast<float*>(matrix));
+  this->CompareProgram->SetUniformi("resolution", this->Resolution);
+  this->CompareProgram->SetUniformi("slot", slot);
+  this->CompareProgram->SetUniformi("opposite", opposite);
+  this->CompareProgram->SetUniformi("words", words);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->Storage);
+  glEnable(GL_RASTERIZER_DISCARD);
+  this->CompareVAO->Bind();
+  if (!subset)
+  {
+    glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(this->NumberOfReceivers));
+  }
+  else if (!subset->empty())
+  {
+    this->Subset->Bind();
+    glDrawElements(GL_POINTS, static_cast<GLsizei>(subset->size()), GL_UNSIGNED_INT, nullptr);
+  }
+  this->CompareVAO->Release();
+  glDisable(GL_RASTERIZER_DISCARD);
+  this->Farthest->Deactivate();
+  this->Nearest->Deactivate();
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+//------------------------------------------------------------------------------
+void vtkVisibilityRenderer::ReadSlots(
+  const std::vector<std::pair<size_t, int>>& slotOf, int words, std::vector<Bits>& results)
+{
+  std::vector<std::uint32_t> slots(static_cast<size_t>(words) * CompareBatch);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Storage);
+  glGetBufferSubData(
+    GL_SHADER_STORAGE_BUFFER, 0, slots.size() * sizeof(std::uint32_t), slots.data());
+  for (const auto& entry : slotOf)
+  {
+    Bits bits((this->NumberOfReceivers + 63) / 64, 0);
+    const std::uint32_t* row = slots.data() + entry.second * words;
+    for (int w = 0; w < words; ++w)
+    {
+      bits[w / 2] |= std::uint64_t(row[w]) << (32 * (w % 2));
+    }
+    results[entry.first] = std::move(bits);
+  }
 }
 
 //------------------------------------------------------------------------------

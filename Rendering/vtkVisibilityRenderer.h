@@ -49,6 +49,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 class vtkOpenGLBufferObject;
@@ -133,6 +134,20 @@ private:
   void DrawSceneDepth(const float matrix[16]);
   // Shaders, textures and framebuffer of DepthCompare's paired depth pass.
   bool PreparePairs(std::string& error);
+  // DepthCompare's steps: the storage buffer (`words` per slot) and the subset's indices; a
+  // batch of direction pairs drawn and tested, each direction into a slot (returned with it);
+  // the nearest and farthest surfaces along one direction; every receiver tested against them
+  // into its slot and its opposite's; the slots read back into `results`.
+  bool PrepareCompare(const std::vector<std::uint32_t>* subset, int words, std::string& error);
+  std::vector<std::pair<size_t, int>> CompareBatchOfPairs(
+    const std::vector<std::array<double, 3>>& directions,
+    const std::vector<std::pair<size_t, long>>& batch, int words,
+    const std::vector<std::uint32_t>* subset);
+  void DrawNearestFarthest(const float matrix[16]);
+  void CompareReceivers(const float matrix[16], int slot, int opposite, int words,
+    const std::vector<std::uint32_t>* subset);
+  void ReadSlots(
+    const std::vector<std::pair<size_t, int>>& slotOf, int words, std::vector<Bits>& results);
   // Program, depth texture and framebuffer of the camera pass.
   bool PrepareView(int width, int height, bool queries, std::string& error);
   // Compiles a program whose vertex shader takes the scene's points as vertexMC, with its vertex
