@@ -386,98 +386,61 @@ int vtkOpenEXRReader::RequestInformation(
   return 1;
 }
 
-//------------------------------------------------------------------------------
-int vtkOpenEXRReader::RequestData(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+namespace
 {
-  vtkImageData* output = vtkImageData::GetData(outputVector);
-  if (this->Components == 0)
+// The data window's pixels of a luminance-chroma image, which the library converts to RGB.
+void ReadLuminanceChroma(const Source& source, const std::string& name, const Imath::Box2i& data,
+  int c, std::vector<float>& pixels)
+{
+  const int width = data.max.x - data.min.x + 1;
+  MemoryStream stream(source.Data, source.Size, name);
+  Imf::RgbaInputFile rgba(stream);
+  std::vector<Imf::Rgba> row(static_cast<size_t>(width));
+  for (int y = data.min.y; y <= data.max.y; ++y)
   {
-    return 0;
+    rgba.setFrameBuffer(
+      row.data() - data.min.x - static_cast<ptrdiff_t>(y) * width, 1, static_cast<size_t>(width));
+    rgba.readPixels(y);
+    for (int x = 0; x < width; ++x)
+    {
+      float* p = &pixels[(static_cast<size_t>(y - data.min.y) * width + x) * c];
+      p[0] = row[x].r;
+      p[1] = row[x].g;
+      p[2] = row[x].b;
+    }
   }
-  Source source;
-  std::unique_ptr<MemoryStream> stream;
-  std::string error;
-  std::unique_ptr<Imf::InputFile> file = Open(this->FileName, this->MemoryBuffer,
-    this->MemoryBufferLength, this->MaximumSide, source, stream, error);
-  if (!file)
+}
+
+// The data window's pixels, channel by channel: missing colour channels read as 0, a missing
+// alpha as 1.
+void ReadChannels(
+  Imf::InputFile& file, Layout layout, const Imath::Box2i& data, int c, std::vector<float>& pixels)
+{
+  const char* names[4] = { layout == Layout::Luminance ? "Y" : "R", "G", "B", "A" };
+  Imf::FrameBuffer frame;
+  const size_t xStride = sizeof(float) * c;
+  const size_t yStride = xStride * (data.max.x - data.min.x + 1);
+  char* base = reinterpret_cast<char*>(pixels.data()) -
+    static_cast<ptrdiff_t>(data.min.x) * static_cast<ptrdiff_t>(xStride) -
+    static_cast<ptrdiff_t>(data.min.y) * static_cast<ptrdiff_t>(yStride);
+  for (int k = 0; k < c; ++k)
   {
-    vtkErrorMacro(<< error << ".");
-    return 0;
+    frame.insert(names[k],
+      Imf::Slice(Imf::FLOAT, base + k * sizeof(float), xStride, yStride, 1, 1, k == 3 ? 1.0 : 0.0));
   }
-  const Imf::Header& header = file->header();
-  const Imath::Box2i display = header.displayWindow();
-  const Imath::Box2i data = header.dataWindow();
+  file.setFrameBuffer(frame);
+  file.readPixels(data.min.y, data.max.y);
+}
+
+// Copies the data window's pixels (top row first) where they overlap the display window into
+// `radiance` (bottom row first, as VTK orders images). Lossy compression (DWAA, DWAB) leaves
+// values slightly below 0, which become 0 silently; NaN, infinite or clearly negative values
+// (below -1% of the mean) are counted: the count is returned.
+vtkIdType PlaceDisplayWindow(const std::vector<float>& pixels, const Imath::Box2i& data,
+  const Imath::Box2i& display, int c, vtkFloatArray* radiance)
+{
   const int dataWidth = data.max.x - data.min.x + 1;
-  const int dataHeight = data.max.y - data.min.y + 1;
-  const int c = this->Components;
-  const Layout layout = LayoutOf(header.channels());
-
-  // The data window, top row first as in the file.
-  std::vector<float> pixels(static_cast<size_t>(dataWidth) * dataHeight * c, 0.0f);
-  try
-  {
-    if (layout == Layout::LuminanceChroma)
-    {
-      // The library converts luminance-chroma to RGB.
-      stream.reset(new MemoryStream(source.Data, source.Size, stream->fileName()));
-      Imf::RgbaInputFile rgba(*stream);
-      std::vector<Imf::Rgba> row(static_cast<size_t>(dataWidth));
-      for (int y = data.min.y; y <= data.max.y; ++y)
-      {
-        rgba.setFrameBuffer(row.data() - data.min.x - static_cast<ptrdiff_t>(y) * dataWidth, 1,
-          static_cast<size_t>(dataWidth));
-        rgba.readPixels(y);
-        for (int x = 0; x < dataWidth; ++x)
-        {
-          float* p = &pixels[(static_cast<size_t>(y - data.min.y) * dataWidth + x) * c];
-          p[0] = row[x].r;
-          p[1] = row[x].g;
-          p[2] = row[x].b;
-        }
-      }
-    }
-    else
-    {
-      const char* names[4] = { "R", "G", "B", "A" };
-      if (layout == Layout::Luminance)
-      {
-        names[0] = "Y";
-      }
-      Imf::FrameBuffer frame;
-      const size_t xStride = sizeof(float) * c;
-      const size_t yStride = xStride * dataWidth;
-      char* base = reinterpret_cast<char*>(pixels.data()) -
-        static_cast<ptrdiff_t>(data.min.x) * static_cast<ptrdiff_t>(xStride) -
-        static_cast<ptrdiff_t>(data.min.y) * static_cast<ptrdiff_t>(yStride);
-      for (int k = 0; k < c; ++k)
-      {
-        // Missing colour channels read as 0, a missing alpha as 1.
-        frame.insert(names[k],
-          Imf::Slice(
-            Imf::FLOAT, base + k * sizeof(float), xStride, yStride, 1, 1, k == 3 ? 1.0 : 0.0));
-      }
-      file->setFrameBuffer(frame);
-      file->readPixels(data.min.y, data.max.y);
-    }
-  }
-  catch (const std::exception& e)
-  {
-    vtkErrorMacro("The EXR's pixels cannot be read: " << e.what() << ".");
-    return 0;
-  }
-
-  // The display window, bottom row first as VTK orders images.
-  output->SetExtent(0, this->Width - 1, 0, this->Height - 1, 0, 0);
-  output->SetSpacing(1.0, 1.0, 1.0);
-  output->SetOrigin(0.0, 0.0, 0.0);
-  vtkNew<vtkFloatArray> radiance;
-  radiance->SetName("Radiance");
-  radiance->SetNumberOfComponents(c);
-  radiance->SetNumberOfTuples(static_cast<vtkIdType>(this->Width) * this->Height);
-  radiance->Fill(0.0);
-  // Lossy compression (DWAA, DWAB) leaves values slightly below 0, which become 0 silently;
-  // NaN, infinite or clearly negative values (below -1% of the mean) are reported.
+  const int width = display.max.x - display.min.x + 1;
   double sum = 0.0;
   vtkIdType finite = 0;
   for (float v : pixels)
@@ -498,7 +461,7 @@ int vtkOpenEXRReader::RequestData(
       const float* p =
         &pixels[(static_cast<size_t>(y - data.min.y) * dataWidth + (x - data.min.x)) * c];
       float* q =
-        radiance->GetPointer((static_cast<vtkIdType>(row) * this->Width + (x - display.min.x)) * c);
+        radiance->GetPointer((static_cast<vtkIdType>(row) * width + (x - display.min.x)) * c);
       for (int k = 0; k < c; ++k)
       {
         const float v = p[k];
@@ -512,6 +475,63 @@ int vtkOpenEXRReader::RequestData(
       }
     }
   }
+  return repaired;
+}
+}
+
+//------------------------------------------------------------------------------
+int vtkOpenEXRReader::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkImageData* output = vtkImageData::GetData(outputVector);
+  if (this->Components == 0)
+  {
+    return 0;
+  }
+  // 1. The data window's pixels, top row first as in the file (the header was checked in
+  // RequestInformation).
+  Source source;
+  std::unique_ptr<MemoryStream> stream;
+  std::string error;
+  std::unique_ptr<Imf::InputFile> file = Open(this->FileName, this->MemoryBuffer,
+    this->MemoryBufferLength, this->MaximumSide, source, stream, error);
+  if (!file)
+  {
+    vtkErrorMacro(<< error << ".");
+    return 0;
+  }
+  const Imf::Header& header = file->header();
+  const Imath::Box2i data = header.dataWindow();
+  const int c = this->Components;
+  std::vector<float> pixels(
+    static_cast<size_t>(data.max.x - data.min.x + 1) * (data.max.y - data.min.y + 1) * c, 0.0f);
+  try
+  {
+    const Layout layout = LayoutOf(header.channels());
+    if (layout == Layout::LuminanceChroma)
+    {
+      ReadLuminanceChroma(source, stream->fileName(), data, c, pixels);
+    }
+    else
+    {
+      ReadChannels(*file, layout, data, c, pixels);
+    }
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro("The EXR's pixels cannot be read: " << e.what() << ".");
+    return 0;
+  }
+  // 2. The display window's radiance, its unusable values repaired and counted.
+  output->SetExtent(0, this->Width - 1, 0, this->Height - 1, 0, 0);
+  output->SetSpacing(1.0, 1.0, 1.0);
+  output->SetOrigin(0.0, 0.0, 0.0);
+  vtkNew<vtkFloatArray> radiance;
+  radiance->SetName("Radiance");
+  radiance->SetNumberOfComponents(c);
+  radiance->SetNumberOfTuples(static_cast<vtkIdType>(this->Width) * this->Height);
+  radiance->Fill(0.0);
+  const vtkIdType repaired = PlaceDisplayWindow(pixels, data, header.displayWindow(), c, radiance);
   output->GetPointData()->SetScalars(radiance);
   if (repaired > 0)
   {
