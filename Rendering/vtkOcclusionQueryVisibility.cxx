@@ -412,41 +412,41 @@ void vtkOcclusionQueryVisibility::BuildOpenGLScene()
   in.SceneBuilt = true;
 }
 
-//------------------------------------------------------------------------------
-bool vtkOcclusionQueryVisibility::UpdateSeen(std::string& error)
+namespace
 {
-  vtkInternals& in = *this->Internals;
-  vtkRenderer* renderer = in.ViewRenderer;
-  vtkCamera* camera = renderer->GetActiveCamera();
-  int width = renderer->GetSize()[0], height = renderer->GetSize()[1];
+// The view's size in pixels: the renderer's, or before its first render its window's (or VTK's
+// default).
+void ViewSize(vtkRenderer* renderer, int& width, int& height)
+{
+  width = renderer->GetSize()[0];
+  height = renderer->GetSize()[1];
   if (width <= 0 || height <= 0)
   {
-    // Not rendered yet: the window's size, or VTK's default.
     const int* size =
       renderer->GetRenderWindow() ? renderer->GetRenderWindow()->GetSize() : nullptr;
     width = size && size[0] > 0 ? size[0] : 300;
     height = size && size[1] > 0 ? size[1] : 300;
   }
-  // The paper's per-triangle queries with its backend, or where storage buffers are missing
-  // (OpenGL 3.3 suffices for them); one draw into a storage buffer otherwise.
-  if (!this->PrepareOpenGL(false, error))
-  {
-    return false;
-  }
-  const bool queries =
-    this->Backend == OCCLUSION_QUERY || !vtkVisibilityRenderer::Missing(true).empty();
+}
 
-  // Local coordinates to the world (the prop's matrix after the local origin), then to the eye
-  // as the renderer sees it (the camera's model-view, with its model and user transforms).
+// The column-major matrix from the scene's local coordinates (`origin` shifted, within `radius`)
+// to the camera's clip space: the prop's matrix after the local origin, the camera's model-view
+// (with its model and user transforms), then its projection with near and far planes around the
+// scene's bounding sphere (the camera's clipping range may not have been reset for this view
+// yet), on a copy of the camera, whose projection then has everything else the renderer uses.
+// False when the scene is behind the camera.
+bool CameraClipMatrix(vtkCamera* camera, vtkProp3D* prop, const double origin[3], double radius,
+  int width, int height, float matrix[16])
+{
   vtkNew<vtkMatrix4x4> local;
   for (int c = 0; c < 3; ++c)
   {
-    local->SetElement(c, 3, in.Receivers.Origin[c]);
+    local->SetElement(c, 3, origin[c]);
   }
   vtkNew<vtkMatrix4x4> model;
-  if (in.ViewProp)
+  if (prop)
   {
-    vtkMatrix4x4::Multiply4x4(in.ViewProp->GetMatrix(), local, model);
+    vtkMatrix4x4::Multiply4x4(prop->GetMatrix(), local, model);
   }
   else
   {
@@ -454,9 +454,6 @@ bool vtkOcclusionQueryVisibility::UpdateSeen(std::string& error)
   }
   vtkNew<vtkMatrix4x4> eye;
   vtkMatrix4x4::Multiply4x4(camera->GetModelViewTransformMatrix(), model, eye);
-  // Near and far planes around the scene's bounding sphere (the camera's clipping range may
-  // not have been reset for this view yet), on a copy of the camera, whose projection then has
-  // everything else the renderer uses (view angle, window centre, shear, user matrix).
   double scale = 0.0;
   for (int c = 0; c < 3; ++c)
   {
@@ -465,21 +462,18 @@ bool vtkOcclusionQueryVisibility::UpdateSeen(std::string& error)
         eye->GetElement(1, c) * eye->GetElement(1, c) +
         eye->GetElement(2, c) * eye->GetElement(2, c)));
   }
-  const double radius = in.Radius * scale;
   const double depth = -eye->GetElement(2, 3);
-  const double far = depth + radius;
+  const double far = depth + radius * scale;
   if (far <= 0.0)
   {
-    // The scene is behind the camera: nothing is seen.
-    return true;
+    return false;
   }
   vtkNew<vtkCamera> view;
   view->DeepCopy(camera);
-  view->SetClippingRange(std::max(depth - radius, 1e-3 * far), far);
+  view->SetClippingRange(std::max(depth - radius * scale, 1e-3 * far), far);
   vtkNew<vtkMatrix4x4> clip;
   vtkMatrix4x4::Multiply4x4(
     view->GetProjectionTransformMatrix(static_cast<double>(width) / height, -1.0, 1.0), eye, clip);
-  float matrix[16];
   for (int row = 0; row < 4; ++row)
   {
     for (int column = 0; column < 4; ++column)
@@ -487,25 +481,56 @@ bool vtkOcclusionQueryVisibility::UpdateSeen(std::string& error)
       matrix[4 * column + row] = static_cast<float>(clip->GetElement(row, column));
     }
   }
+  return true;
+}
 
-  // The unseen triangles, as the OpenGL scene numbers their vertices.
-  const std::vector<std::uint32_t>& triangles = in.Receivers.Triangles;
-  const std::uint32_t base = in.ReceiverVertices;
-  std::vector<std::uint32_t> candidates;
-  candidates.reserve(3 * in.Unseen.size());
-  for (std::uint32_t t : in.Unseen)
+// The `triangles`' corners as the OpenGL scene numbers them (receivers' vertices from `base`).
+std::vector<std::uint32_t> SceneCorners(const std::vector<std::uint32_t>& triangles,
+  std::uint32_t base, const std::vector<std::uint32_t>& which)
+{
+  std::vector<std::uint32_t> corners;
+  corners.reserve(3 * which.size());
+  for (std::uint32_t t : which)
   {
     for (int c = 0; c < 3; ++c)
     {
-      candidates.push_back(base + triangles[3 * size_t(t) + c]);
+      corners.push_back(base + triangles[3 * size_t(t) + c]);
     }
   }
+  return corners;
+}
+}
+
+//------------------------------------------------------------------------------
+bool vtkOcclusionQueryVisibility::UpdateSeen(std::string& error)
+{
+  vtkInternals& in = *this->Internals;
+  // 1. The camera pass: which of the triangles unseen so far the camera sees now, by the
+  // paper's per-triangle queries with its backend or where storage buffers are missing (OpenGL
+  // 3.3 suffices for them), by one draw into a storage buffer otherwise.
+  if (!this->PrepareOpenGL(false, error))
+  {
+    return false;
+  }
+  int width, height;
+  ViewSize(in.ViewRenderer, width, height);
+  float matrix[16];
+  if (!CameraClipMatrix(in.ViewRenderer->GetActiveCamera(), in.ViewProp, in.Receivers.Origin,
+        in.Radius, width, height, matrix))
+  {
+    return true; // the scene is behind the camera: nothing is seen
+  }
+  const bool queries =
+    this->Backend == OCCLUSION_QUERY || !vtkVisibilityRenderer::Missing(true).empty();
   std::vector<char> seen;
-  if (!in.Renderer->ViewVisible(matrix, width, height, candidates, queries, seen, error))
+  if (!in.Renderer->ViewVisible(matrix, width, height,
+        SceneCorners(in.Receivers.Triangles, in.ReceiverVertices, in.Unseen), queries, seen, error))
   {
     error = "OpenGL failed in the camera pass: " + error + ".";
     return false;
   }
+  // 2. Their points are computed; below the threshold, the rest is computed now and filtering
+  // stops.
   std::vector<std::uint32_t> unseen;
   for (size_t i = 0; i < in.Unseen.size(); ++i)
   {
@@ -514,7 +539,6 @@ bool vtkOcclusionQueryVisibility::UpdateSeen(std::string& error)
       unseen.push_back(in.Unseen[i]);
     }
   }
-  // Below the threshold, the rest is computed now and filtering stops.
   const bool stop = static_cast<double>(unseen.size()) <=
     this->FilteringThreshold * static_cast<double>(in.Receivers.GetNumberOfTriangles());
   for (size_t i = 0; i < in.Unseen.size(); ++i)
