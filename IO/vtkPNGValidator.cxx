@@ -168,6 +168,146 @@ std::string Inflate(
   }
   return problem.str();
 }
+
+// What the chunks read so far have said.
+struct ChunkState
+{
+  Header Image;
+  bool HaveHeader = false;
+  bool HavePalette = false;
+  bool InImageData = false;
+  bool AfterImageData = false;
+  bool Ended = false;
+  std::vector<unsigned char> Compressed;
+};
+
+// The framing of the chunk at `pos`: a whole chunk, a valid name and, for a critical chunk, its
+// CRC. Gives its type, body and length; the problem, or empty.
+std::string ReadChunkFrame(const unsigned char* bytes, size_t size, size_t pos, std::string& type,
+  const unsigned char*& body, uint32_t& length)
+{
+  const size_t left = size - pos;
+  if (left == 0)
+  {
+    return "is truncated (it has no IEND chunk)";
+  }
+  if (left < 12)
+  {
+    return "is truncated (a chunk header is cut off)";
+  }
+  length = BigEndian32(bytes + pos);
+  type.assign(reinterpret_cast<const char*>(bytes + pos + 4), 4);
+  for (char c : type)
+  {
+    if (!((c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z')))
+    {
+      return "is damaged (a chunk has an invalid name)";
+    }
+  }
+  if (length > 0x7fffffffu || length > left - 12)
+  {
+    std::ostringstream problem;
+    problem << "is truncated (chunk " << type << " needs " << length << " bytes, " << left - 12
+            << " are left)";
+    return problem.str();
+  }
+  body = bytes + pos + 8;
+  const bool critical = type[0] >= 'A' && type[0] <= 'Z';
+  const uLong crc = crc32(0L, bytes + pos + 4, static_cast<uInt>(length + 4));
+  if (critical && crc != BigEndian32(body + length))
+  {
+    return "is damaged (chunk " + type + " fails its CRC check)";
+  }
+  return std::string();
+}
+
+// What a chunk means for the image: IHDR first and once, PLTE valid and before the data, IDAT
+// chunks consecutive (their data gathered), IEND last, no unknown critical chunk. The problem, or
+// empty.
+std::string TakeChunk(
+  const std::string& type, const unsigned char* body, uint32_t length, ChunkState& state)
+{
+  if (!state.HaveHeader && type != "IHDR")
+  {
+    return "is damaged (it does not start with an IHDR chunk)";
+  }
+  if (state.InImageData && type != "IDAT")
+  {
+    state.InImageData = false;
+    state.AfterImageData = true;
+  }
+  if (type == "IHDR")
+  {
+    const std::string problem = state.HaveHeader ? std::string("it has two IHDR chunks")
+                                                 : ParseHeader(body, length, state.Image);
+    state.HaveHeader = true;
+    return problem.empty() ? problem : "is damaged (" + problem + ")";
+  }
+  if (type == "PLTE")
+  {
+    const int color = state.Image.ColorType;
+    const bool bad = color == 0 || color == 4 || length == 0 || length % 3 != 0 || length > 768 ||
+      state.HavePalette || !state.Compressed.empty();
+    state.HavePalette = true;
+    return bad ? "is damaged (its PLTE chunk is invalid)" : std::string();
+  }
+  if (type == "IDAT")
+  {
+    if (state.AfterImageData)
+    {
+      return "is damaged (its IDAT chunks are not consecutive)";
+    }
+    if (state.Image.ColorType == 3 && !state.HavePalette)
+    {
+      return "is damaged (a palette image without a PLTE chunk)";
+    }
+    state.InImageData = true;
+    state.Compressed.insert(state.Compressed.end(), body, body + length);
+    return std::string();
+  }
+  state.Ended = type == "IEND";
+  const bool critical = type[0] >= 'A' && type[0] <= 'Z';
+  return critical && !state.Ended ? "uses an unknown critical chunk, " + type : std::string();
+}
+
+// The image data inflated to exactly the rows the header describes (all passes of an interlaced
+// image), each starting with a filter type from 0 to 4. The problem, or empty.
+std::string CheckRows(const Header& header, const std::vector<unsigned char>& compressed)
+{
+  if (compressed.empty())
+  {
+    return "is damaged (it has no image data)";
+  }
+  uint64_t expected = 0;
+  const auto passes = header.Passes();
+  for (const auto& pass : passes)
+  {
+    expected += pass.second * (1 + header.RowBytes(pass.first));
+  }
+  if (expected > MaximumBytes)
+  {
+    return "is too large to decode here (over 2 GiB of image data)";
+  }
+  std::vector<unsigned char> rows;
+  const std::string inflateProblem = Inflate(compressed, expected, rows);
+  if (!inflateProblem.empty())
+  {
+    return "is damaged (" + inflateProblem + ")";
+  }
+  uint64_t offset = 0;
+  for (const auto& pass : passes)
+  {
+    const uint64_t stride = 1 + header.RowBytes(pass.first);
+    for (uint64_t r = 0; r < pass.second; ++r, offset += stride)
+    {
+      if (rows[static_cast<size_t>(offset)] > 4)
+      {
+        return "is damaged (an image row has an invalid filter type)";
+      }
+    }
+  }
+  return std::string();
+}
 }
 
 //------------------------------------------------------------------------------
@@ -198,133 +338,23 @@ std::string vtkPNGValidator::CheckBuffer(const void* data, size_t size)
   {
     return "is not a PNG file";
   }
-  Header header;
-  bool haveHeader = false, havePalette = false, inImageData = false, afterImageData = false;
-  std::vector<unsigned char> compressed;
-  size_t pos = 8;
-  for (;;)
+  // 1. The chunks up to IEND, each framed and in its place; the image data gathered.
+  ChunkState state;
+  for (size_t pos = 8; !state.Ended;)
   {
-    const size_t left = size - pos;
-    if (left == 0)
+    std::string type;
+    const unsigned char* body = nullptr;
+    uint32_t length = 0;
+    std::string problem = ReadChunkFrame(bytes, size, pos, type, body, length);
+    problem = problem.empty() ? TakeChunk(type, body, length, state) : problem;
+    if (!problem.empty())
     {
-      return "is truncated (it has no IEND chunk)";
-    }
-    if (left < 12)
-    {
-      return "is truncated (a chunk header is cut off)";
-    }
-    const uint32_t length = BigEndian32(bytes + pos);
-    const std::string type(reinterpret_cast<const char*>(bytes + pos + 4), 4);
-    for (char c : type)
-    {
-      if (!((c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z')))
-      {
-        return "is damaged (a chunk has an invalid name)";
-      }
-    }
-    if (length > 0x7fffffffu || length > left - 12)
-    {
-      std::ostringstream problem;
-      problem << "is truncated (chunk " << type << " needs " << length << " bytes, " << left - 12
-              << " are left)";
-      return problem.str();
-    }
-    const unsigned char* body = bytes + pos + 8;
-    const bool critical = type[0] >= 'A' && type[0] <= 'Z';
-    uLong crc = crc32(0L, bytes + pos + 4, static_cast<uInt>(length + 4));
-    if (critical && crc != BigEndian32(body + length))
-    {
-      return "is damaged (chunk " + type + " fails its CRC check)";
-    }
-    if (!haveHeader && type != "IHDR")
-    {
-      return "is damaged (it does not start with an IHDR chunk)";
-    }
-    if (inImageData && type != "IDAT")
-    {
-      inImageData = false;
-      afterImageData = true;
-    }
-    if (type == "IHDR")
-    {
-      if (haveHeader)
-      {
-        return "is damaged (it has two IHDR chunks)";
-      }
-      const std::string headerProblem = ParseHeader(body, length, header);
-      if (!headerProblem.empty())
-      {
-        return "is damaged (" + headerProblem + ")";
-      }
-      haveHeader = true;
-    }
-    else if (type == "PLTE")
-    {
-      if (header.ColorType == 0 || header.ColorType == 4 || length == 0 || length % 3 != 0 ||
-        length > 768 || havePalette || !compressed.empty())
-      {
-        return "is damaged (its PLTE chunk is invalid)";
-      }
-      havePalette = true;
-    }
-    else if (type == "IDAT")
-    {
-      if (afterImageData)
-      {
-        return "is damaged (its IDAT chunks are not consecutive)";
-      }
-      if (header.ColorType == 3 && !havePalette)
-      {
-        return "is damaged (a palette image without a PLTE chunk)";
-      }
-      inImageData = true;
-      compressed.insert(compressed.end(), body, body + length);
-    }
-    else if (type == "IEND")
-    {
-      break;
-    }
-    else if (critical)
-    {
-      return "uses an unknown critical chunk, " + type;
+      return problem;
     }
     pos += 12 + size_t(length);
   }
-  if (compressed.empty())
-  {
-    return "is damaged (it has no image data)";
-  }
-
-  uint64_t expected = 0;
-  const auto passes = header.Passes();
-  for (const auto& pass : passes)
-  {
-    expected += pass.second * (1 + header.RowBytes(pass.first));
-  }
-  if (expected > MaximumBytes)
-  {
-    return "is too large to decode here (over 2 GiB of image data)";
-  }
-  std::vector<unsigned char> rows;
-  const std::string inflateProblem = Inflate(compressed, expected, rows);
-  if (!inflateProblem.empty())
-  {
-    return "is damaged (" + inflateProblem + ")";
-  }
-  // Each row starts with its filter type, 0 to 4.
-  uint64_t offset = 0;
-  for (const auto& pass : passes)
-  {
-    const uint64_t stride = 1 + header.RowBytes(pass.first);
-    for (uint64_t r = 0; r < pass.second; ++r, offset += stride)
-    {
-      if (rows[static_cast<size_t>(offset)] > 4)
-      {
-        return "is damaged (an image row has an invalid filter type)";
-      }
-    }
-  }
-  return std::string();
+  // 2. The image data inflated: every row as long as the header says, with a valid filter.
+  return CheckRows(state.Image, state.Compressed);
 }
 
 //------------------------------------------------------------------------------
