@@ -3,7 +3,9 @@
 # representation. Needs `make paraview` and xwd, xwdtopnm, pnmtopng (x11-apps, netpbm):
 #   Utilities/Pictures/paraview_gui.sh build-paraview docs/images/paraview-gui.png
 # The scene is a state file written by pvpython (Utilities/Pictures/paraview_state.py), which the
-# GUI opens with the plugin found through PV_PLUGIN_PATH; the screen is captured after it drew.
+# GUI loads with the plugin found through PV_PLUGIN_PATH, from a script that also selects the
+# filter (so that its properties and the representation show); the screen is captured after it
+# drew. The GUI's Python needs the unpacked ParaView modules first on sys.path, as pvpython does.
 set -euo pipefail
 build="$1"
 out="$2"
@@ -11,10 +13,18 @@ work="$build/pictures"
 mkdir -p "$work"
 source "$build/env.sh"
 here="$(cd "$(dirname "$0")" && pwd)"
+cat > "$work/gui.py" <<PY
+import sys
+sys.path.insert(0, "$(realpath "$build")/python3-paraview/usr/lib/python3/dist-packages")
+from paraview.simple import FindSource, LoadState, Render, SetActiveSource
+LoadState("$(realpath "$work")/bunny.pvsm")
+SetActiveSource(FindSource("AperturePrecompute1"))
+Render()
+PY
 # One X server for both steps (back-to-back servers can race for the same display).
 xvfb-run -a -s "-screen 0 1400x900x24" bash -c "
   pvpython '$here/paraview_state.py' '$here/../../Testing/Data' '$work/bunny.pvsm'
-  paraview --dr --state='$work/bunny.pvsm' > '$work/paraview.log' 2>&1 &
+  paraview --dr --script='$work/gui.py' > '$work/paraview.log' 2>&1 &
   sleep 30
   xwd -root -silent | xwdtopnm 2>/dev/null | pnmtopng > '$work/screen.png'
   kill %1"
