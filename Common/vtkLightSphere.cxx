@@ -51,26 +51,12 @@ double SphericalTriangleArea(const Vector& a, const Vector& b, const Vector& c)
 {
   return 2.0 * std::atan2(std::abs(Dot(a, Cross(b, c))), 1.0 + Dot(a, b) + Dot(b, c) + Dot(c, a));
 }
-}
 
-//------------------------------------------------------------------------------
-int vtkLightSphere::GetNumberOfDirections(int level)
+// The octahedron: +x -x +y -y +z -z, and its faces wound outward.
+void Octahedron(std::vector<Vector>& vertices, std::vector<Triangle>& faces)
 {
-  level = std::min(std::max(level, 0), MaximumLevel);
-  return 4 * (1 << (2 * level)) + 2;
-}
-
-//------------------------------------------------------------------------------
-void vtkLightSphere::Build()
-{
-  if (this->BuiltLevel == this->Level)
-  {
-    return;
-  }
-  // The octahedron: +x -x +y -y +z -z, and its faces wound outward.
-  std::vector<Vector> vertices = { { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 },
-    { 0, 0, 1 }, { 0, 0, -1 } };
-  std::vector<Triangle> faces;
+  vertices = { { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 }, { 0, 0, -1 } };
+  faces.clear();
   for (int sx = 0; sx < 2; ++sx)
   {
     for (int sy = 0; sy < 2; ++sy)
@@ -82,38 +68,43 @@ void vtkLightSphere::Build()
       }
     }
   }
-  // Midpoint subdivision; new vertices are appended, so each level extends the previous one.
-  for (int level = 0; level < this->Level; ++level)
-  {
-    std::map<std::pair<int, int>, int> midpoints;
-    auto midpoint = [&](int i, int j)
-    {
-      const auto key = std::make_pair(std::min(i, j), std::max(i, j));
-      const auto found = midpoints.find(key);
-      if (found != midpoints.end())
-      {
-        return found->second;
-      }
-      const Vector& p = vertices[i];
-      const Vector& q = vertices[j];
-      vertices.push_back(Normalized({ p[0] + q[0], p[1] + q[1], p[2] + q[2] }));
-      midpoints[key] = static_cast<int>(vertices.size()) - 1;
-      return static_cast<int>(vertices.size()) - 1;
-    };
-    std::vector<Triangle> finer;
-    for (const Triangle& f : faces)
-    {
-      const int ab = midpoint(f[0], f[1]), bc = midpoint(f[1], f[2]), ca = midpoint(f[2], f[0]);
-      finer.push_back({ f[0], ab, ca });
-      finer.push_back({ ab, f[1], bc });
-      finer.push_back({ ca, bc, f[2] });
-      finer.push_back({ ab, bc, ca });
-    }
-    faces.swap(finer);
-  }
+}
 
-  // Voronoi cells: each bounded by the circumcentres of the triangles around its direction, in
-  // angular order.
+// One midpoint subdivision; new vertices are appended, so each level extends the previous one.
+void Subdivide(std::vector<Vector>& vertices, std::vector<Triangle>& faces)
+{
+  std::map<std::pair<int, int>, int> midpoints;
+  auto midpoint = [&](int i, int j)
+  {
+    const auto key = std::make_pair(std::min(i, j), std::max(i, j));
+    const auto found = midpoints.find(key);
+    if (found != midpoints.end())
+    {
+      return found->second;
+    }
+    const Vector& p = vertices[i];
+    const Vector& q = vertices[j];
+    vertices.push_back(Normalized({ p[0] + q[0], p[1] + q[1], p[2] + q[2] }));
+    midpoints[key] = static_cast<int>(vertices.size()) - 1;
+    return static_cast<int>(vertices.size()) - 1;
+  };
+  std::vector<Triangle> finer;
+  for (const Triangle& f : faces)
+  {
+    const int ab = midpoint(f[0], f[1]), bc = midpoint(f[1], f[2]), ca = midpoint(f[2], f[0]);
+    finer.push_back({ f[0], ab, ca });
+    finer.push_back({ ab, f[1], bc });
+    finer.push_back({ ca, bc, f[2] });
+    finer.push_back({ ab, bc, ca });
+  }
+  faces.swap(finer);
+}
+
+// The solid angle of each vertex's Voronoi cell: bounded by the circumcentres of the triangles
+// around it, in angular order.
+std::vector<double> VoronoiAreas(
+  const std::vector<Vector>& vertices, const std::vector<Triangle>& faces)
+{
   std::vector<Vector> centres;
   std::vector<std::vector<int>> around(vertices.size());
   for (size_t t = 0; t < faces.size(); ++t)
@@ -128,8 +119,7 @@ void vtkLightSphere::Build()
       around[corner].push_back(static_cast<int>(t));
     }
   }
-  this->Directions.clear();
-  this->Weights.clear();
+  std::vector<double> areas;
   for (size_t v = 0; v < vertices.size(); ++v)
   {
     const Vector& d = vertices[v];
@@ -148,9 +138,39 @@ void vtkLightSphere::Build()
       area += SphericalTriangleArea(
         d, centres[ordered[k].second], centres[ordered[(k + 1) % ordered.size()].second]);
     }
-    this->Directions.insert(this->Directions.end(), d.begin(), d.end());
-    this->Weights.push_back(area);
+    areas.push_back(area);
   }
+  return areas;
+}
+}
+
+//------------------------------------------------------------------------------
+int vtkLightSphere::GetNumberOfDirections(int level)
+{
+  level = std::min(std::max(level, 0), MaximumLevel);
+  return 4 * (1 << (2 * level)) + 2;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightSphere::Build()
+{
+  if (this->BuiltLevel == this->Level)
+  {
+    return;
+  }
+  std::vector<Vector> vertices;
+  std::vector<Triangle> faces;
+  Octahedron(vertices, faces);
+  for (int level = 0; level < this->Level; ++level)
+  {
+    Subdivide(vertices, faces);
+  }
+  this->Directions.clear();
+  for (const Vector& d : vertices)
+  {
+    this->Directions.insert(this->Directions.end(), d.begin(), d.end());
+  }
+  this->Weights = VoronoiAreas(vertices, faces);
   this->BuiltLevel = this->Level;
 }
 
