@@ -16,6 +16,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkMath.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
@@ -119,6 +120,25 @@ bool vtkApertureDistributedOccluders::GatherForPiece(vtkMultiProcessController* 
   }
   remote = Gather(controller, { input }, std::numeric_limits<double>::infinity());
   return true;
+}
+
+//------------------------------------------------------------------------------
+std::vector<vtkPolyData*> vtkApertureDistributedOccluders::Occluders(
+  vtkInformationVector* occluderInfo, vtkPolyData* remote)
+{
+  std::vector<vtkPolyData*> occluders;
+  for (int i = 0; i < occluderInfo->GetNumberOfInformationObjects(); ++i)
+  {
+    if (auto* occluder = vtkPolyData::GetData(occluderInfo, i))
+    {
+      occluders.push_back(occluder);
+    }
+  }
+  if (remote && remote->GetNumberOfCells() > 0)
+  {
+    occluders.push_back(remote);
+  }
+  return occluders;
 }
 
 //------------------------------------------------------------------------------

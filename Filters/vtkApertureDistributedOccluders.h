@@ -31,6 +31,7 @@
 #include <vector> // For std::vector
 
 class vtkInformation;
+class vtkInformationVector;
 class vtkMultiProcessController;
 class vtkPolyData;
 
@@ -56,6 +57,12 @@ public:
    */
   static bool GatherForPiece(vtkMultiProcessController* controller, vtkInformation* outInfo,
     vtkPolyData* input, vtkSmartPointer<vtkPolyData>& remote);
+
+  /**
+   * A filter's occluders: the vtkPolyData on its occluder port, and `remote` when it has cells.
+   */
+  static std::vector<vtkPolyData*> Occluders(
+    vtkInformationVector* occluderInfo, vtkPolyData* remote);
 };
 
 #endif

@@ -353,13 +353,7 @@ bool vtkAperturePrecompute::vtkRun::CheckReceivers()
 // collective step, so it comes before any check can fail).
 void vtkAperturePrecompute::vtkRun::CollectOccluders(vtkInformationVector* occluderInfo)
 {
-  for (int i = 0; i < occluderInfo->GetNumberOfInformationObjects(); ++i)
-  {
-    if (auto* occluder = vtkPolyData::GetData(occluderInfo, i))
-    {
-      this->Occluders.push_back(occluder);
-    }
-  }
+  this->Occluders = vtkApertureDistributedOccluders::Occluders(occluderInfo, nullptr);
   std::vector<vtkPolyData*> local;
   for (const auto& r : this->Receivers)
   {

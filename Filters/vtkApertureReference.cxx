@@ -204,24 +204,6 @@ bool CheckSettings(vtkApertureReference* self, vtkPolyData* input, double light[
   return true;
 }
 
-// The occluder port's surfaces, and the other ranks' in a distributed run.
-std::vector<vtkPolyData*> Occluders(vtkInformationVector* occluderInfo, vtkPolyData* remote)
-{
-  std::vector<vtkPolyData*> occluders;
-  for (int i = 0; i < occluderInfo->GetNumberOfInformationObjects(); ++i)
-  {
-    if (auto* occluder = vtkPolyData::GetData(occluderInfo, i))
-    {
-      occluders.push_back(occluder);
-    }
-  }
-  if (remote && remote->GetNumberOfCells() > 0)
-  {
-    occluders.push_back(remote);
-  }
-  return occluders;
-}
-
 // Every surface point's estimate and noise, in batches between progress events; false with an
 // error when Embree failed, `aborted` when the filter was.
 bool Trace(vtkApertureReference* self, const vtkApertureSurface& receivers,
@@ -353,7 +335,8 @@ int vtkApertureReference::RequestData(
   std::string error;
   vtkApertureSurface receivers;
   std::vector<vtkApertureSurface> occluderSurfaces;
-  if (!vtkApertureSurface::SetScene(input, Occluders(inputVector[1], remote), this->FeatureAngle,
+  if (!vtkApertureSurface::SetScene(input,
+        vtkApertureDistributedOccluders::Occluders(inputVector[1], remote), this->FeatureAngle,
         this->RayOffset, receivers, occluderSurfaces, error))
   {
     vtkErrorMacro(<< error);

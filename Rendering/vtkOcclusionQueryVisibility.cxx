@@ -729,6 +729,88 @@ bool vtkOcclusionQueryVisibility::RenderOpenGL(const std::vector<std::array<doub
   return ok;
 }
 
+namespace
+{
+// Output point o sees direction j when its receiving point is above its tangent plane and has
+// its bit set; `cosine` gets n . l.
+struct Sees
+{
+  const vtkApertureSurface& Receivers;
+  const std::vector<vtkIdType>& Points; // each output point's receiving point, or -1
+  const std::vector<int>& Done;         // directions computed per receiving point
+  const std::vector<Bits>& Computed;
+  const std::vector<std::array<double, 3>>& Directions;
+
+  bool operator()(vtkIdType o, int j, double& cosine) const
+  {
+    const vtkIdType i = this->Points[o];
+    if (i < 0 || !this->Receivers.Valid[i] || j >= this->Done[i])
+    {
+      return false;
+    }
+    const float* n = this->Receivers.GetNormal(i);
+    const auto& l = this->Directions[j];
+    cosine = n[0] * l[0] + n[1] * l[1] + n[2] * l[2];
+    return cosine > 0.0 && Bit(this->Computed[j], i);
+  }
+};
+
+// M_oj = max(n . l_j, 0) where output point o sees direction j.
+vtkSmartPointer<vtkFloatArray> VisibilityArray(const Sees& sees, vtkIdType m, int k)
+{
+  auto visibility = vtkSmartPointer<vtkFloatArray>::New();
+  visibility->SetName("Visibility");
+  visibility->SetNumberOfComponents(k);
+  visibility->SetNumberOfTuples(m);
+  float* values = visibility->GetPointer(0);
+  vtkSMPTools::For(0, m,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType o = begin; o < end; ++o)
+      {
+        for (int j = 0; j < k; ++j)
+        {
+          double c = 0.0;
+          values[o * k + j] = sees(o, j, c) ? static_cast<float>(c) : 0.0f;
+        }
+      }
+    });
+  return visibility;
+}
+
+// The raw visibility, one bit per output point and direction.
+vtkSmartPointer<vtkBitArray> VisibilityBitsArray(const Sees& sees, vtkIdType m, int k)
+{
+  auto bits = vtkSmartPointer<vtkBitArray>::New();
+  bits->SetName("VisibilityBits");
+  bits->SetNumberOfComponents(k);
+  bits->SetNumberOfTuples(m);
+  for (vtkIdType o = 0; o < m; ++o)
+  {
+    for (int j = 0; j < k; ++j)
+    {
+      double c = 0.0;
+      bits->SetValue(o * k + j, sees(o, j, c));
+    }
+  }
+  return bits;
+}
+
+// Which output points have their visibility yet (vertex filtering: those of triangles not seen
+// have none).
+vtkSmartPointer<vtkUnsignedCharArray> ComputedArray(const Sees& sees, vtkIdType m, int k)
+{
+  auto done = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  done->SetName("VisibilityComputed");
+  done->SetNumberOfTuples(m);
+  for (vtkIdType o = 0; o < m; ++o)
+  {
+    done->SetValue(o, sees.Points[o] >= 0 && sees.Done[sees.Points[o]] >= k ? 1 : 0);
+  }
+  return done;
+}
+}
+
 //------------------------------------------------------------------------------
 // The output: the input's points (split where creases split them) with the arrays, and the
 // lightsphere in the field data.
@@ -749,68 +831,18 @@ void vtkOcclusionQueryVisibility::WriteOutputs(vtkPolyData* input, vtkPolyData* 
     pd->SetNormals(vtkApertureSurface::Scatter(
       "Normals", 3, normals, normals + 3 * receivers.GetNumberOfPoints(), points, zero, zero));
   }
-  // Output point o sees direction j when its receiving point is above its tangent plane and has
-  // its bit set.
-  auto sees = [&](vtkIdType o, int j, double& cosine)
-  {
-    const vtkIdType i = points[o];
-    if (i < 0 || !receivers.Valid[i] || j >= in.Directions[i])
-    {
-      return false;
-    }
-    const float* normal = receivers.GetNormal(i);
-    cosine =
-      normal[0] * directions[j][0] + normal[1] * directions[j][1] + normal[2] * directions[j][2];
-    return cosine > 0.0 && Bit(in.Computed[j], i);
-  };
+  const Sees sees{ receivers, points, in.Directions, in.Computed, directions };
   if (this->ComputeVisibility)
   {
-    vtkNew<vtkFloatArray> visibility;
-    visibility->SetName("Visibility");
-    visibility->SetNumberOfComponents(k);
-    visibility->SetNumberOfTuples(m);
-    float* values = visibility->GetPointer(0);
-    vtkSMPTools::For(0, m,
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        for (vtkIdType o = begin; o < end; ++o)
-        {
-          for (int j = 0; j < k; ++j)
-          {
-            double c = 0.0;
-            values[o * k + j] = sees(o, j, c) ? static_cast<float>(c) : 0.0f;
-          }
-        }
-      });
-    pd->AddArray(visibility);
+    pd->AddArray(VisibilityArray(sees, m, k));
   }
   if (this->ComputeVisibilityBits)
   {
-    vtkNew<vtkBitArray> bits;
-    bits->SetName("VisibilityBits");
-    bits->SetNumberOfComponents(k);
-    bits->SetNumberOfTuples(m);
-    for (vtkIdType o = 0; o < m; ++o)
-    {
-      for (int j = 0; j < k; ++j)
-      {
-        double c = 0.0;
-        bits->SetValue(o * k + j, sees(o, j, c));
-      }
-    }
-    pd->AddArray(bits);
+    pd->AddArray(VisibilityBitsArray(sees, m, k));
   }
   if (this->VertexFiltering)
   {
-    // Which points have their visibility yet: those of triangles not seen have none.
-    vtkNew<vtkUnsignedCharArray> done;
-    done->SetName("VisibilityComputed");
-    done->SetNumberOfTuples(m);
-    for (vtkIdType o = 0; o < m; ++o)
-    {
-      done->SetValue(o, points[o] >= 0 && in.Directions[points[o]] >= k ? 1 : 0);
-    }
-    pd->AddArray(done);
+    pd->AddArray(ComputedArray(sees, m, k));
   }
   vtkSmartPointer<vtkDoubleArray> lightDirections;
   lightDirections.TakeReference(sphere->NewDirections());
@@ -853,22 +885,11 @@ int vtkOcclusionQueryVisibility::RequestData(
     vtkErrorMacro("Vertex filtering follows a camera: SetViewRenderer() is needed.");
     return 0;
   }
-  std::vector<vtkPolyData*> occluders;
-  for (int i = 0; i < inputVector[1]->GetNumberOfInformationObjects(); ++i)
-  {
-    if (auto* occluder = vtkPolyData::GetData(inputVector[1], i))
-    {
-      occluders.push_back(occluder);
-    }
-  }
-  if (remote && remote->GetNumberOfCells() > 0)
-  {
-    occluders.push_back(remote);
-  }
 
   // 1. The surfaces, and what is kept of earlier updates.
   std::string error;
-  if (!this->UpdateCache(input, occluders, error))
+  if (!this->UpdateCache(
+        input, vtkApertureDistributedOccluders::Occluders(inputVector[1], remote), error))
   {
     vtkErrorMacro(<< error);
     return 0;
