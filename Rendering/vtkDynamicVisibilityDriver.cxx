@@ -255,6 +255,7 @@ void vtkDynamicVisibilityDriver::Update()
   const double start = vtkTimerLog::GetUniversalTime();
   const int lowest = std::min(this->MinimumLevel, this->MaximumLevel);
   const int highest = std::max(this->MinimumLevel, this->MaximumLevel);
+  // 1. What changed since the last frame.
   const vtkMTimeType upstream = this->UpstreamMTime();
   const std::vector<double> view = this->ViewSignature();
   const bool geometryChanged = upstream != this->LastUpstream;
@@ -262,8 +263,38 @@ void vtkDynamicVisibilityDriver::Update()
   this->LastUpstream = upstream;
   this->LastView = view;
   this->Moving = this->Interacting || geometryChanged || viewChanged;
+  // 2. The level, the view and the prop's rotation; the update.
+  this->ChooseLevel(lowest, highest, geometryChanged, viewChanged);
+  if (this->Renderer)
+  {
+    this->Visibility->SetViewRenderer(this->Renderer);
+  }
+  this->Visibility->SetViewProp(this->Prop);
+  if (viewChanged && this->Visibility->GetVertexFiltering() &&
+    this->Visibility->GetFilteringActive())
+  {
+    this->Visibility->Modified();
+  }
+  this->PassObjectRotation();
+  if (this->Lighting)
+  {
+    this->Lighting->Update();
+  }
+  else
+  {
+    this->Visibility->Update();
+  }
+  this->LastUpdateTime = vtkTimerLog::GetUniversalTime() - start;
+  // 3. The next moving frames' level, and a refining frame when one is due.
+  this->AdaptMovingLevel(lowest, highest);
+  this->ScheduleRefinement();
+}
 
-  // The adaptive lightsphere: the moving level follows the update times, idle frames refine.
+//------------------------------------------------------------------------------
+// The adaptive lightsphere: the moving level follows the update times, idle frames refine.
+void vtkDynamicVisibilityDriver::ChooseLevel(
+  int lowest, int highest, bool geometryChanged, bool viewChanged)
+{
   if (this->MovingLevel < 0)
   {
     // Climbing from the coarsest level is cheap; falling from the finest is not.
@@ -288,55 +319,46 @@ void vtkDynamicVisibilityDriver::Update()
     this->Level = std::min(std::max(this->Level + 1, lowest), highest);
   }
   this->Visibility->SetLevel(this->Level);
+}
 
-  if (this->Renderer)
+//------------------------------------------------------------------------------
+// The prop's rotation, without its scale, turns the lighting's directions.
+void vtkDynamicVisibilityDriver::PassObjectRotation()
+{
+  if (!this->Lighting || !this->Prop)
   {
-    this->Visibility->SetViewRenderer(this->Renderer);
+    return;
   }
-  this->Visibility->SetViewProp(this->Prop);
-  if (viewChanged && filtering)
+  double a[3][3], r[3][3];
+  for (int i = 0; i < 3; ++i)
   {
-    this->Visibility->Modified();
-  }
-  if (this->Lighting && this->Prop)
-  {
-    // The prop's rotation, without its scale.
-    double a[3][3], r[3][3];
-    for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
     {
-      for (int j = 0; j < 3; ++j)
-      {
-        a[i][j] = this->Prop->GetMatrix()->GetElement(i, j);
-      }
+      a[i][j] = this->Prop->GetMatrix()->GetElement(i, j);
     }
-    vtkMath::Orthogonalize3x3(a, r);
-    this->Lighting->SetObjectRotation(&r[0][0]);
   }
-  if (this->Lighting)
-  {
-    this->Lighting->Update();
-  }
-  else
-  {
-    this->Visibility->Update();
-  }
-  this->LastUpdateTime = vtkTimerLog::GetUniversalTime() - start;
+  vtkMath::Orthogonalize3x3(a, r);
+  this->Lighting->SetObjectRotation(&r[0][0]);
+}
 
-  // Only frames that computed something tell what a level costs.
-  if (this->Moving && this->TargetUpdateTime > 0.0 &&
-    this->Visibility->GetNumberOfComputedPoints() > 0)
+//------------------------------------------------------------------------------
+// Only frames that computed something tell what a level costs; the next level costs about four
+// times as much (four times the directions).
+void vtkDynamicVisibilityDriver::AdaptMovingLevel(int lowest, int highest)
+{
+  if (!this->Moving || this->TargetUpdateTime <= 0.0 ||
+    this->Visibility->GetNumberOfComputedPoints() == 0)
   {
-    // The next level costs about four times as much (four times the directions).
-    if (this->LastUpdateTime > this->TargetUpdateTime && this->MovingLevel > lowest)
-    {
-      --this->MovingLevel;
-    }
-    else if (4.0 * this->LastUpdateTime < this->TargetUpdateTime && this->MovingLevel < highest)
-    {
-      ++this->MovingLevel;
-    }
+    return;
   }
-  this->ScheduleRefinement();
+  if (this->LastUpdateTime > this->TargetUpdateTime && this->MovingLevel > lowest)
+  {
+    --this->MovingLevel;
+  }
+  else if (4.0 * this->LastUpdateTime < this->TargetUpdateTime && this->MovingLevel < highest)
+  {
+    ++this->MovingLevel;
+  }
 }
 
 //------------------------------------------------------------------------------

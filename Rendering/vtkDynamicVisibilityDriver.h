@@ -186,6 +186,12 @@ private:
   std::vector<double> ViewSignature();
   // Asks the interactor for a refining frame when one is due.
   void ScheduleRefinement();
+  // Update()'s steps: the level of this frame (the moving level when a moving frame has work,
+  // one finer on idle frames); the prop's rotation for the lighting; the moving level adapted to
+  // the time the frame took.
+  void ChooseLevel(int lowest, int highest, bool geometryChanged, bool viewChanged);
+  void PassObjectRotation();
+  void AdaptMovingLevel(int lowest, int highest);
 
   int MovingLevel = -1;
   vtkMTimeType LastUpstream = 0;

@@ -333,6 +333,23 @@ bool AddElementOrProperty(const std::string& keyword, std::istringstream& words,
   return true;
 }
 
+// A "format" line's type. vtkPLY gives up (leaking the elements read so far) on a line that is
+// not "format" and two words, the first a known type; false with a sentence for such a line.
+bool ReadFormat(std::istringstream& words, std::string& format, std::string& problem)
+{
+  std::string version, extra;
+  words >> format >> version;
+  const bool known =
+    format == "ascii" || format == "binary_little_endian" || format == "binary_big_endian";
+  if (!known || version.empty() || (words >> extra))
+  {
+    problem = "is damaged (its PLY format line is not 'format ascii|binary_little_endian|"
+              "binary_big_endian <version>')";
+    return false;
+  }
+  return true;
+}
+
 // The header's elements and format, read line by line as vtkPLY reads it (its header ends at
 // the first line without words); false with a sentence when it is not a good PLY header.
 bool ReadHeader(const std::string& bytes, std::vector<Element>& elements, std::string& format,
@@ -362,9 +379,9 @@ bool ReadHeader(const std::string& bytes, std::vector<Element>& elements, std::s
     {
       return false;
     }
-    if (keyword == "format")
+    if (keyword == "format" && !ReadFormat(words, format, problem))
     {
-      words >> format;
+      return false;
     }
     at = end + 1;
   }

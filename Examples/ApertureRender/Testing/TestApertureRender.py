@@ -465,6 +465,13 @@ for name in ("bunny.ply", "bunny-ascii.ply", "bunny-binary.stl", "bunny.vtp", "b
                        [truncated(name, fraction), "-o", path("x.png")], 1, "truncated-" + name)
 expect_failure("broken STL", [write_bytes("broken.stl", b"solid x\n facet nonsense\n"),
                               "-o", path("x.png")], 1, "broken.stl")
+# vtkPLY gives up on a format line that is not "format <type> <version>" and leaks the elements
+# it read before it: refused first.
+late_format = (b"ply\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+               b"format ascii 1.0 extra\nelement face 1\nproperty list uchar int vertex_indices\n"
+               b"end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
+expect_failure("PLY with a bad format line", [write_bytes("late-format.ply", late_format),
+                                              "-o", path("x.png")], 1, "PLY format line")
 expect_failure("broken VTP", [write_bytes("broken.vtp", b"not xml at all"),
                               "-o", path("x.png")], 1, "not a VTK XML polydata file")
 # Counts no file of that size can hold (the reader would allocate them before reading).
