@@ -37,6 +37,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <new>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -155,6 +156,39 @@ double VTPPieceValues(vtkXMLDataElement* piece)
   return values;
 }
 
+// A name two arrays of one group (a piece's PointData or CellData, or the FieldData) share, or
+// empty: vtkXMLPolyDataReader replaces the first by the second and then reads through the one it
+// dropped.
+std::string SharedArrayName(vtkXMLDataElement* polyData)
+{
+  std::vector<vtkXMLDataElement*> groups;
+  for (int i = 0; i < polyData->GetNumberOfNestedElements(); ++i)
+  {
+    vtkXMLDataElement* element = polyData->GetNestedElement(i);
+    groups.push_back(element);
+    for (int j = 0; j < element->GetNumberOfNestedElements(); ++j)
+    {
+      groups.push_back(element->GetNestedElement(j));
+    }
+  }
+  for (vtkXMLDataElement* group : groups)
+  {
+    const std::string kind = group->GetName() ? group->GetName() : "";
+    std::set<std::string> names;
+    for (int k = 0; (kind == "PointData" || kind == "CellData" || kind == "FieldData") &&
+         k < group->GetNumberOfNestedElements();
+         ++k)
+    {
+      const char* name = group->GetNestedElement(k)->GetAttribute("Name");
+      if (name && !names.insert(name).second)
+      {
+        return name;
+      }
+    }
+  }
+  return std::string();
+}
+
 // vtkXMLPolyDataReader allocates what a piece's counts say before it reads the data: a damaged
 // count can ask for exabytes. Stored plainly (ASCII, base64, raw) every value takes a byte or more;
 // VTK's compressors on its 32 KiB blocks pack at most about 630 (zlib) or 250 (LZMA) bytes into
@@ -213,6 +247,12 @@ bool CheckVTP(vtkXMLPolyDataReader* reader, MessageCapture& messages, const std:
       error = Quoted(name) + " is damaged (its points do not have 3 components)";
       return false;
     }
+  }
+  const std::string shared = SharedArrayName(data);
+  if (!shared.empty())
+  {
+    error = Quoted(name) + " is damaged (two arrays of one group are named " + Quoted(shared) + ")";
+    return false;
   }
   return CheckVTPSizes(root, data, name, error);
 }

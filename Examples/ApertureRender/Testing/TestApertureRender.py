@@ -496,6 +496,13 @@ huge_offsets = (b'<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1">
 expect_failure("VTP whose offsets ask for petabytes",
                [write_bytes("huge-offsets.vtp", huge_offsets), "-o", path("x.png")], 1,
                "more memory than there is")
+# Two cell arrays of one name: the reader would read through the one it dropped.
+same_names = huge_offsets.replace(b"1000000000000000", b"3").replace(
+    b"<Polys>", b'<CellData>\n<DataArray type="Int32" Name="Face" format="ascii">0</DataArray>\n'
+    b'<DataArray type="Int32" Name="Face" format="ascii">0</DataArray>\n</CellData>\n<Polys>')
+expect_failure("VTP with two cell arrays of one name",
+               [write_bytes("same-names.vtp", same_names), "-o", path("x.png")], 1,
+               "two arrays of one group")
 expect_failure("broken legacy VTK", [write_bytes("broken.vtk", b"garbage\n"),
                                      "-o", path("x.png")], 1, "not a VTK legacy file")
 fuji_bytes = open(fuji_png, "rb").read()
