@@ -9,8 +9,10 @@ JOBS ?= $(shell nproc)
 PYTHON ?= /usr/bin/python3
 CMAKE_ARGS ?=
 
-# Debian's VTK renders through X only: pictures are made on a virtual screen.
-XVFB = xvfb-run -a -s "-screen 0 1920x1080x24"
+# Debian's VTK renders through X only: pictures are made on a virtual screen. Without -noreset
+# the server resets whenever its last client leaves and refuses connections meanwhile, which
+# failed a test now and then ("cannot open the X display", "bad X server connection").
+XVFB = xvfb-run -a -s "-screen 0 1920x1080x24 -noreset"
 RENDER = $(XVFB) $(BUILD_DIR)/bin/aperture-render
 
 .PHONY: all deps configure build demo test pictures evaluation report fuzz sanitize install format \
@@ -36,7 +38,7 @@ demo: build
 	@echo "Demo picture: $(abspath $(BUILD_DIR)/demo/fuji.png)"
 
 test: build
-	@cd $(BUILD_DIR) && xvfb-run -a -s "-screen 0 1920x1080x24" \
+	@cd $(BUILD_DIR) && $(XVFB) \
 	  ctest --output-on-failure --parallel $(JOBS)
 
 # The pictures in README.md and docs/: every shading mode on the Fuji terrain and on the bunny, the
@@ -157,7 +159,7 @@ sanitize:
 	  -DCMAKE_MODULE_LINKER_FLAGS="$(SANITIZE) -shared-libasan -Wl,-rpath,$(dir $(SANITIZE_RUNTIME))" \
 	  > $(SANITIZE_DIR)/configure.log 2>&1 || { cat $(SANITIZE_DIR)/configure.log; exit 1; }
 	@cmake --build $(SANITIZE_DIR) --parallel $(JOBS)
-	@cd $(SANITIZE_DIR) && $(SANITIZER_ENV) xvfb-run -a -s "-screen 0 1920x1080x24" \
+	@cd $(SANITIZE_DIR) && $(SANITIZER_ENV) $(XVFB) \
 	  ctest --output-on-failure --parallel $(JOBS) --timeout 1500 $(SANITIZE_CTEST_ARGS)
 ASAN_SETTINGS = detect_leaks=1:abort_on_error=1:detect_odr_violation=0:allocator_may_return_null=1:$\
   verify_asan_link_order=0

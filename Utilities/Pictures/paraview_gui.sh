@@ -22,7 +22,7 @@ SetActiveSource(FindSource("AperturePrecompute1"))
 Render()
 PY
 # One X server for both steps (back-to-back servers can race for the same display).
-xvfb-run -a -s "-screen 0 1400x900x24" bash -c "
+xvfb-run -a -s "-screen 0 1400x900x24 -noreset" bash -c "
   pvpython '$here/paraview_state.py' '$here/../../Testing/Data' '$work/bunny.pvsm'
   paraview --dr --script='$work/gui.py' > '$work/paraview.log' 2>&1 &
   sleep 30
