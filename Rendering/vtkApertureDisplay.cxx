@@ -10,6 +10,8 @@
 =========================================================================*/
 #include "vtkApertureDisplay.h"
 
+#include "vtkRenderWindow.h"
+
 #ifdef APERTURE_USE_X11
 #include <X11/Xlib.h>
 #endif
@@ -54,4 +56,29 @@ bool vtkApertureDisplay::Get(void*& display, std::string& problem)
   (void)problem;
 #endif
   return true;
+}
+
+//------------------------------------------------------------------------------
+vtkRenderWindow* vtkApertureDisplay::NewOffScreenWindow(std::string& problem)
+{
+  void* display = nullptr;
+  if (!vtkApertureDisplay::Get(display, problem))
+  {
+    problem = "No OpenGL context: " + problem + ".";
+    return nullptr;
+  }
+  vtkRenderWindow* window = vtkRenderWindow::New();
+  if (display)
+  {
+    window->SetDisplayId(display);
+  }
+  window->SetOffScreenRendering(1);
+  window->SetSize(16, 16);
+  if (!window->SupportsOpenGL())
+  {
+    problem = "No usable OpenGL context: VTK needs OpenGL 3.2 and this display offers less.";
+    window->Delete();
+    return nullptr;
+  }
+  return window;
 }

@@ -10,7 +10,7 @@
 =========================================================================*/
 /**
  * @class   vtkApertureDisplay
- * @brief   the X display for render windows the module opens itself (private)
+ * @brief   the render windows the module opens itself, and their X display (private)
  *
  * VTK 9.1's X render windows abort the program when they cannot reach the X server. An X server
  * whose last client leaves resets itself, and a connection attempted meanwhile fails, so windows
@@ -18,6 +18,8 @@
  * therefore opens one connection when it first needs it, reports a missing display as an error,
  * hands that connection to its windows (vtkRenderWindow::SetDisplayId()), and keeps it open for
  * the rest of the program. Without X11 there is nothing to check.
+ *
+ * NewOffScreenWindow() opens such a window for filters that render without one of the caller's.
  */
 
 #ifndef vtkApertureDisplay_h
@@ -27,6 +29,8 @@
 
 #include <string>
 
+class vtkRenderWindow;
+
 class VTKAPERTURELIGHTING_EXPORT vtkApertureDisplay
 {
 public:
@@ -35,6 +39,12 @@ public:
    * reason in `problem`, when there is no display to open.
    */
   static bool Get(void*& display, std::string& problem);
+
+  /**
+   * A new small off-screen render window on the shared connection whose OpenGL VTK can use (the
+   * caller deletes it), or nullptr with the reason, a sentence, in `problem`.
+   */
+  static vtkRenderWindow* NewOffScreenWindow(std::string& problem);
 };
 
 #endif

@@ -16,7 +16,9 @@
 #include "vtkLightSphere.h"
 #include "vtkMortonOrder.h"
 #include "vtkRayCastVisibility.h"
-#include "vtkVisibilityRenderer.h"
+#include "vtkVisibilityCameraPass.h"
+#include "vtkVisibilityMatrixPasses.h"
+#include "vtkVisibilityScene.h"
 
 #include "vtkBitArray.h"
 #include "vtkCallbackCommand.h"
@@ -54,7 +56,7 @@ vtkStandardNewMacro(vtkOcclusionQueryVisibility);
 namespace
 {
 using Directions = std::vector<std::array<double, 3>>;
-using Bits = vtkVisibilityRenderer::Bits;
+using Bits = vtkVisibilityMatrixPasses::Bits;
 
 // Directions handled between two progress events.
 constexpr size_t Chunk = 8;
@@ -135,7 +137,10 @@ public:
   unsigned long WindowGoneTag = 0;
   vtkWeakPointer<vtkRenderer> ViewRenderer;
   vtkWeakPointer<vtkProp3D> ViewProp;
-  std::unique_ptr<vtkVisibilityRenderer> Renderer;
+  // The GL passes over the scene uploaded (declared after it: they go first).
+  vtkVisibilityScene GLScene;
+  vtkVisibilityMatrixPasses MatrixPasses{ GLScene };
+  vtkVisibilityCameraPass CameraPass{ GLScene };
 };
 
 //------------------------------------------------------------------------------
@@ -272,10 +277,10 @@ int vtkOcclusionQueryVisibility::FillInputPortInformation(int port, vtkInformati
 //------------------------------------------------------------------------------
 void vtkOcclusionQueryVisibility::ReleaseGraphicsResources(vtkWindow* window)
 {
-  if (this->Internals->Renderer)
-  {
-    this->Internals->Renderer->ReleaseGraphicsResources(window);
-  }
+  vtkInternals& in = *this->Internals;
+  in.CameraPass.ReleaseGraphicsResources(window);
+  in.MatrixPasses.ReleaseGraphicsResources(window);
+  in.GLScene.ReleaseGraphicsResources(window);
 }
 
 //------------------------------------------------------------------------------
@@ -286,29 +291,9 @@ bool vtkOcclusionQueryVisibility::PrepareOpenGL(bool needStorage, std::string& e
   vtkRenderWindow* window = this->GetRenderWindow();
   if (!window)
   {
-    if (!this->OwnWindow)
+    if (!this->OwnWindow && !(this->OwnWindow = vtkApertureDisplay::NewOffScreenWindow(error)))
     {
-      std::string problem;
-      void* display = nullptr;
-      if (!vtkApertureDisplay::Get(display, problem))
-      {
-        error = "No OpenGL context: " + problem + ".";
-        return false;
-      }
-      this->OwnWindow = vtkRenderWindow::New();
-      if (display)
-      {
-        this->OwnWindow->SetDisplayId(display);
-      }
-      this->OwnWindow->SetOffScreenRendering(1);
-      this->OwnWindow->SetSize(16, 16);
-      if (!this->OwnWindow->SupportsOpenGL())
-      {
-        error = "No usable OpenGL context: VTK needs OpenGL 3.2 and this display offers less.";
-        this->OwnWindow->Delete();
-        this->OwnWindow = nullptr;
-        return false;
-      }
+      return false;
     }
     window = this->OwnWindow;
   }
@@ -321,7 +306,7 @@ bool vtkOcclusionQueryVisibility::PrepareOpenGL(bool needStorage, std::string& e
   }
   glWindow->Initialize();
   glWindow->MakeCurrent();
-  const std::string missing = vtkVisibilityRenderer::Missing(needStorage);
+  const std::string missing = vtkVisibilityScene::Missing(needStorage);
   if (!missing.empty())
   {
     error = std::string("The ") +
@@ -338,18 +323,19 @@ bool vtkOcclusionQueryVisibility::PrepareOpenGL(bool needStorage, std::string& e
   {
     this->BuildOpenGLScene();
   }
-  if (!in.Renderer)
+  if (in.GLScene.GetWindow() != glWindow)
   {
-    in.Renderer.reset(new vtkVisibilityRenderer);
+    this->ReleaseGraphicsResources(in.GLScene.GetWindow());
   }
-  if (!in.Renderer->SetScene(glWindow, in.Points, in.Triangles, in.Receivers.GetNumberOfPoints(),
-        in.Radius, this->DepthResolution, this->PolygonOffsetFactor, this->PolygonOffsetUnits,
-        error))
+  if (!in.GLScene.Set(glWindow, in.Points, in.Triangles, this->PolygonOffsetFactor,
+        this->PolygonOffsetUnits, error) ||
+    !in.MatrixPasses.SetReceivers(
+      in.Receivers.GetNumberOfPoints(), in.Radius, this->DepthResolution, error))
   {
     error = "OpenGL failed: " + error + ".";
     return false;
   }
-  this->UploadedBytes = in.Renderer->GetUploadedBytes();
+  this->UploadedBytes = in.GLScene.GetUploadedBytes();
   in.Uploaded = true;
   return true;
 }
@@ -521,9 +507,9 @@ bool vtkOcclusionQueryVisibility::UpdateSeen(std::string& error)
     return true; // the scene is behind the camera: nothing is seen
   }
   const bool queries =
-    this->Backend == OCCLUSION_QUERY || !vtkVisibilityRenderer::Missing(true).empty();
+    this->Backend == OCCLUSION_QUERY || !vtkVisibilityScene::Missing(true).empty();
   std::vector<char> seen;
-  if (!in.Renderer->ViewVisible(matrix, width, height,
+  if (!in.CameraPass.Visible(matrix, width, height,
         SceneCorners(in.Receivers.Triangles, in.ReceiverVertices, in.Unseen), queries, seen, error))
   {
     error = "OpenGL failed in the camera pass: " + error + ".";
@@ -708,7 +694,7 @@ bool vtkOcclusionQueryVisibility::RenderOpenGL(const std::vector<std::array<doub
   if (this->Backend == DEPTH_COMPARE)
   {
     // All directions at once, so that each can be paired with its opposite.
-    ok = in.Renderer->DepthCompare(directions, visible, error, progress, subset);
+    ok = in.MatrixPasses.DepthCompare(directions, visible, error, progress, subset);
   }
   for (size_t begin = 0; ok && this->Backend == OCCLUSION_QUERY && begin < directions.size();
        begin += Chunk)
@@ -716,12 +702,12 @@ bool vtkOcclusionQueryVisibility::RenderOpenGL(const std::vector<std::array<doub
     const Directions chunk(
       directions.begin() + begin, directions.begin() + std::min(directions.size(), begin + Chunk));
     std::vector<Bits> bits;
-    ok = in.Renderer->OcclusionQuery(chunk, bits, error, subset);
+    ok = in.MatrixPasses.OcclusionQuery(chunk, bits, error, subset);
     visible.insert(visible.end(), bits.begin(), bits.end());
     ok = ok && progress(begin + chunk.size());
   }
-  // SetScene() in this update started the count.
-  this->NumberOfDepthPasses = in.Renderer->GetNumberOfDepthPasses();
+  // SetReceivers() in this update started the count.
+  this->NumberOfDepthPasses = in.MatrixPasses.GetNumberOfDepthPasses();
   if (!ok && !this->GetAbortExecute())
   {
     error = "OpenGL failed: " + error + ".";

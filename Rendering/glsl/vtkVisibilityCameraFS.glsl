@@ -1,5 +1,5 @@
 #version 430 core
-// vtkVisibilityRenderer's camera pass (vertex filtering): candidate triangles that survive the
+// vtkVisibilityCameraPass (vertex filtering): candidate triangles that survive the
 // early depth test against the scene mark their bit.
 layout(early_fragment_tests) in;
 layout(std430, binding = 0) buffer Seen { uint seen[]; };

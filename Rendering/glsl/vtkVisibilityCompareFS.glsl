@@ -1,5 +1,6 @@
 #version 430 core
-// vtkVisibilityRenderer's DepthCompare test rasterises nothing; a program needs a fragment shader.
+// vtkVisibilityMatrixPasses' DepthCompare test rasterises nothing; a program needs a fragment
+// shader.
 out vec4 color;
 void main()
 {

@@ -1,5 +1,5 @@
 #version 430 core
-// vtkVisibilityRenderer's DepthCompare test, in a vertex shader (nothing is rasterised): the
+// vtkVisibilityMatrixPasses' DepthCompare test, in a vertex shader (nothing is rasterised): the
 // receiver's window depth against the texel it falls on, nearer than the nearest surface for the
 // direction (the occlusion-query pass's GL_LESS test), farther than the farthest for its opposite,
 // seen from the same side (the opposite direction's orthographic view is this one mirrored, on

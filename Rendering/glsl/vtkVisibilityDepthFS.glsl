@@ -1,5 +1,5 @@
 //VTK::System::Dec
-// vtkVisibilityRenderer's depth pass: depth only, nothing to shade.
+// vtkVisibilityScene's depth pass: depth only, nothing to shade.
 void main()
 {
 }

@@ -1,5 +1,5 @@
 //VTK::System::Dec
-// vtkVisibilityRenderer's depth pass (the scene seen along a light direction, or by the camera):
+// vtkVisibilityScene's depth pass (the scene seen along a light direction, or by the camera):
 // the scene's points placed by one matrix. Any OpenGL version VTK runs on.
 in vec3 vertexMC;
 uniform mat4 clipMatrix;

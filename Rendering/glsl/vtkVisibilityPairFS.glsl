@@ -1,5 +1,5 @@
 #version 430 core
-// vtkVisibilityRenderer's DepthCompare depth pass, for a direction and its opposite at once: the
+// vtkVisibilityMatrixPasses' DepthCompare depth pass, for a direction and its opposite at once: the
 // nearest and the farthest surface in each texel (blending with GL_MIN and GL_MAX), each pushed
 // away from its light by the offset glPolygonOffset(factor, units) gives a depth pass.
 uniform float offsetFactor;

@@ -1,5 +1,5 @@
 #version 430 core
-// vtkVisibilityRenderer: the scene's points placed by one matrix, for the passes that need GLSL
+// vtkVisibilityScene: the scene's points placed by one matrix, for the passes that need GLSL
 // 4.30 fragment shaders (DepthCompare's paired depth pass and the camera pass).
 in vec3 vertexMC;
 uniform mat4 clipMatrix;
