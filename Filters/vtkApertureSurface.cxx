@@ -101,6 +101,102 @@ struct Classes
   void Unite(int a, int b) { this->Parent[this->Find(a)] = this->Find(b); }
 };
 
+// The sides of one vertex (groups of its triangles): each triangle's side, each side's sum of
+// unit face normals and area, the vertex's area-weighted normal and total area.
+struct Sides
+{
+  std::vector<int> Of;
+  std::vector<std::array<double, 3>> Sums;
+  std::vector<double> Areas;
+  double VertexNormal[3] = { 0.0, 0.0, 0.0 };
+  double Total = 0.0;
+};
+
+// MakeOutput()'s new points: one per input point and receiving point other than its own, in the
+// order asked for, numbered after the input's; each copies its input point with all its data.
+class PointSplitter
+{
+public:
+  PointSplitter(vtkIdType inputPoints, const std::vector<vtkIdType>& pointOfInput,
+    std::vector<vtkIdType>& outputPoints)
+    : N(inputPoints)
+    , PointOfInput(pointOfInput)
+    , OutputPoints(outputPoints)
+  {
+  }
+
+  // The output point of input point `id` for receiving point `point`.
+  vtkIdType Point(vtkIdType id, vtkIdType point)
+  {
+    if (point == this->PointOfInput[id] || point < 0)
+    {
+      return id;
+    }
+    const std::uint64_t key = static_cast<std::uint64_t>(id) << 32 | std::uint64_t(point);
+    auto inserted = this->Added.emplace(key, this->N + static_cast<vtkIdType>(this->Added.size()));
+    if (inserted.second)
+    {
+      this->From->InsertNextId(id);
+      this->To->InsertNextId(inserted.first->second);
+      this->OutputPoints.push_back(point);
+    }
+    return inserted.first->second;
+  }
+
+  // A copy of `cells` whose corners (in connectivity order) use their receiving points'.
+  vtkSmartPointer<vtkCellArray> Renumber(vtkCellArray* cells, const std::vector<vtkIdType>& corners)
+  {
+    auto result = vtkSmartPointer<vtkCellArray>::New();
+    result->DeepCopy(cells);
+    vtkIdType c = 0;
+    vtkIdType npts;
+    const vtkIdType* ids;
+    std::vector<vtkIdType> renumbered;
+    for (vtkIdType cell = 0; cell < result->GetNumberOfCells(); ++cell)
+    {
+      result->GetCellAtId(cell, npts, ids);
+      renumbered.assign(ids, ids + npts);
+      for (vtkIdType k = 0; k < npts; ++k, ++c)
+      {
+        renumbered[k] = this->Point(ids[k], corners[c]);
+      }
+      result->ReplaceCellAtId(cell, npts, renumbered.data());
+    }
+    return result;
+  }
+
+  // The output's points and point data: the input's, then the new points'.
+  void CopyPoints(vtkPolyData* input, vtkPolyData* output) const
+  {
+    const vtkIdType total = this->N + this->From->GetNumberOfIds();
+    vtkNew<vtkPoints> points;
+    points->SetDataType(input->GetPoints()->GetDataType());
+    points->SetNumberOfPoints(total);
+    for (vtkIdType i = 0; i < this->N; ++i)
+    {
+      points->SetPoint(i, input->GetPoint(i));
+    }
+    for (vtkIdType k = 0; k < this->From->GetNumberOfIds(); ++k)
+    {
+      points->SetPoint(this->To->GetId(k), input->GetPoint(this->From->GetId(k)));
+    }
+    output->SetPoints(points);
+    vtkNew<vtkPointData> pd;
+    pd->CopyAllOn(vtkDataSetAttributes::COPYTUPLE);
+    pd->CopyAllocate(input->GetPointData(), total);
+    pd->CopyData(input->GetPointData(), 0, this->N, 0);
+    pd->CopyData(input->GetPointData(), this->From, this->To);
+    output->GetPointData()->ShallowCopy(pd);
+  }
+
+private:
+  const vtkIdType N;
+  const std::vector<vtkIdType>& PointOfInput;
+  std::vector<vtkIdType>& OutputPoints;
+  std::unordered_map<std::uint64_t, vtkIdType> Added;
+  vtkNew<vtkIdList> From, To;
+};
+
 // Grid geometry of a height field: point (i, j) is Origin + I * i + J * j + Up * height.
 struct Grid
 {
@@ -133,6 +229,54 @@ struct Grid
     }
   }
 };
+
+// The grid's points in world coordinates (3 each), and whether each is finite.
+void GridPoints(const Grid& grid, vtkDataArray* heights, double heightScale,
+  std::vector<double>& world, std::vector<unsigned char>& finite)
+{
+  world.resize(3 * grid.Nx * grid.Ny);
+  finite.assign(grid.Nx * grid.Ny, 0);
+  for (vtkIdType j = 0; j < grid.Ny; ++j)
+  {
+    for (vtkIdType i = 0; i < grid.Nx; ++i)
+    {
+      const vtkIdType id = i + j * grid.Nx;
+      grid.Point(i, j, heightScale * heights->GetComponent(id, 0), &world[3 * id]);
+      finite[id] = IsFinite(&world[3 * id]);
+    }
+  }
+}
+
+// Two triangles per grid cell, those with three finite corners, wound so that their normals
+// point along the grid's third axis.
+std::vector<std::uint32_t> GridTriangles(const Grid& grid, const std::vector<unsigned char>& finite)
+{
+  const double cross[3] = { grid.I[1] * grid.J[2] - grid.I[2] * grid.J[1],
+    grid.I[2] * grid.J[0] - grid.I[0] * grid.J[2], grid.I[0] * grid.J[1] - grid.I[1] * grid.J[0] };
+  const bool flip = vtkMath::Dot(cross, grid.Up) < 0.0;
+  std::vector<std::uint32_t> triangles;
+  triangles.reserve(6 * (grid.Nx - 1) * (grid.Ny - 1));
+  auto addTriangle = [&](vtkIdType a, vtkIdType b, vtkIdType c)
+  {
+    if (finite[a] && finite[b] && finite[c])
+    {
+      for (const vtkIdType corner : { a, flip ? c : b, flip ? b : c })
+      {
+        triangles.push_back(static_cast<std::uint32_t>(corner));
+      }
+    }
+  };
+  for (vtkIdType j = 0; j + 1 < grid.Ny; ++j)
+  {
+    for (vtkIdType i = 0; i + 1 < grid.Nx; ++i)
+    {
+      const vtkIdType p00 = i + j * grid.Nx;
+      addTriangle(p00, p00 + 1, p00 + 1 + grid.Nx);
+      addTriangle(p00, p00 + 1 + grid.Nx, p00 + grid.Nx);
+    }
+  }
+  return triangles;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -180,15 +324,22 @@ struct vtkApertureSurface::Build
   void SelectGeometry();
   vtkIdType Neighbour(vtkIdType corner, int step) const;
   void Orient();
+  bool Consistent() const;
+  std::vector<std::vector<std::pair<vtkIdType, bool>>> ManifoldNeighbours() const;
+  void FlipPieces(const std::vector<std::vector<std::pair<vtkIdType, bool>>>& next);
   void ComputeFaceNormals();
   void FindIncident();
   void SidesFromCreases(double cosAngle);
-  void MakeSidePoints(vtkIdType v, const std::vector<std::array<double, 3>>& sums,
-    const std::vector<double>& areas, const double vertexNormal[3], double total,
-    std::vector<vtkIdType>& pointOfSide);
+  void GroupCreaseFaces(
+    const std::uint32_t* corners, int m, double cosAngle, Classes& classes) const;
+  void SumSides(const std::uint32_t* corners, int m, Classes& classes, Sides& sides) const;
+  void MakeSidePoints(vtkIdType v, const Sides& sides, std::vector<vtkIdType>& pointOfSide);
   void SidesFromNormals(vtkDataArray* normals, double cosAngle);
   vtkIdType AddPoint(vtkIdType vertex, unsigned int side, const double normal[3]);
   void MapInputPoints();
+  void PointOfEachInput();
+  void CornerPoints();
+  void StripTriangles();
 };
 
 //------------------------------------------------------------------------------
@@ -371,11 +522,20 @@ vtkIdType vtkApertureSurface::Build::Neighbour(vtkIdType corner, int step) const
 // Each connected piece keeps the winding most of its triangles had.
 void vtkApertureSurface::Build::Orient()
 {
-  // Consistent already when no two triangles leave a vertex along the same edge.
+  if (!this->Consistent())
+  {
+    this->FlipPieces(this->ManifoldNeighbours());
+    this->FindIncident(); // the corners of flipped triangles moved
+  }
+}
+
+//------------------------------------------------------------------------------
+// Consistent when no two triangles leave a vertex along the same edge.
+bool vtkApertureSurface::Build::Consistent() const
+{
   const vtkIdType vertices = static_cast<vtkIdType>(this->IncidentStart.size()) - 1;
   std::vector<vtkIdType> ends;
-  bool consistent = true;
-  for (vtkIdType v = 0; v < vertices && consistent; ++v)
+  for (vtkIdType v = 0; v < vertices; ++v)
   {
     ends.clear();
     for (vtkIdType c = this->IncidentStart[v]; c < this->IncidentStart[v + 1]; ++c)
@@ -383,13 +543,21 @@ void vtkApertureSurface::Build::Orient()
       ends.push_back(this->Neighbour(this->Incident[c], 1));
     }
     std::sort(ends.begin(), ends.end());
-    consistent = std::adjacent_find(ends.begin(), ends.end()) == ends.end();
+    if (std::adjacent_find(ends.begin(), ends.end()) != ends.end())
+    {
+      return false;
+    }
   }
-  if (consistent)
-  {
-    return;
-  }
-  // Neighbours across manifold edges (v, x), v < x, and whether they agree (run it both ways).
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Each geometry triangle's neighbours across manifold edges (v, x), v < x, and whether the two
+// run the edge in opposite directions (agree on their winding).
+std::vector<std::vector<std::pair<vtkIdType, bool>>> vtkApertureSurface::Build::ManifoldNeighbours()
+  const
+{
+  const vtkIdType vertices = static_cast<vtkIdType>(this->IncidentStart.size()) - 1;
   std::vector<std::vector<std::pair<vtkIdType, bool>>> next(this->Geometry.size());
   std::vector<std::pair<vtkIdType, vtkIdType>> edges; // (x, corner)
   for (vtkIdType v = 0; v < vertices; ++v)
@@ -424,6 +592,15 @@ void vtkApertureSurface::Build::Orient()
       }
     }
   }
+  return next;
+}
+
+//------------------------------------------------------------------------------
+// Walks each connected piece from a seed, marking the triangles whose winding differs from the
+// seed's, then flips the minority.
+void vtkApertureSurface::Build::FlipPieces(
+  const std::vector<std::vector<std::pair<vtkIdType, bool>>>& next)
+{
   std::vector<signed char> flip(this->Geometry.size(), -1);
   for (size_t seed = 0; seed < this->Geometry.size(); ++seed)
   {
@@ -457,7 +634,6 @@ void vtkApertureSurface::Build::Orient()
       }
     }
   }
-  this->FindIncident(); // the corners of flipped triangles moved
 }
 
 //------------------------------------------------------------------------------
@@ -542,10 +718,7 @@ vtkIdType vtkApertureSurface::Build::AddPoint(
 void vtkApertureSurface::Build::SidesFromCreases(double cosAngle)
 {
   Classes classes;
-  std::vector<std::pair<vtkIdType, int>> keyed;
-  std::vector<int> rootOf, sideOfRoot;
-  std::vector<std::array<double, 3>> sums;
-  std::vector<double> areas;
+  Sides sides;
   std::vector<vtkIdType> pointOfSide;
   for (vtkIdType v = 0; v + 1 < static_cast<vtkIdType>(this->IncidentStart.size()); ++v)
   {
@@ -555,75 +728,93 @@ void vtkApertureSurface::Build::SidesFromCreases(double cosAngle)
     {
       continue; // in no triangle: its points are on no surface, or only in degenerate cells
     }
-    classes.Reset(m);
-    auto triangle = [&](int i) { return this->Geometry[corners[i] / 3]; };
-    keyed.clear();
+    this->GroupCreaseFaces(corners, m, cosAngle, classes);
+    this->SumSides(corners, m, classes, sides);
+    this->MakeSidePoints(v, sides, pointOfSide);
     for (int i = 0; i < m; ++i)
     {
-      // Polygons are one face each; a strip's triangles are faces of their own.
-      const vtkIdType cell = this->TriCell[triangle(i)];
-      keyed.emplace_back(cell < this->Polygons ? cell : -1 - i, i);
+      this->TriPoint[3 * this->Geometry[corners[i] / 3] + corners[i] % 3] =
+        pointOfSide[sides.Of[i]];
     }
-    std::sort(keyed.begin(), keyed.end());
-    for (int i = 1; i < m; ++i)
+  }
+}
+
+//------------------------------------------------------------------------------
+// The m triangles around a vertex (`corners`, 3 * geometry triangle + corner) in classes: those
+// of one polygon, and those across an edge whose faces are within the feature angle.
+void vtkApertureSurface::Build::GroupCreaseFaces(
+  const std::uint32_t* corners, int m, double cosAngle, Classes& classes) const
+{
+  classes.Reset(m);
+  auto triangle = [&](int i) { return this->Geometry[corners[i] / 3]; };
+  std::vector<std::pair<vtkIdType, int>> keyed;
+  for (int i = 0; i < m; ++i)
+  {
+    // Polygons are one face each; a strip's triangles are faces of their own.
+    const vtkIdType cell = this->TriCell[triangle(i)];
+    keyed.emplace_back(cell < this->Polygons ? cell : -1 - i, i);
+  }
+  std::sort(keyed.begin(), keyed.end());
+  for (int i = 1; i < m; ++i)
+  {
+    if (keyed[i].first == keyed[i - 1].first)
     {
-      if (keyed[i].first == keyed[i - 1].first)
+      classes.Unite(keyed[i].second, keyed[i - 1].second);
+    }
+  }
+  // Triangles sharing an edge (v, x), by the other end x.
+  keyed.clear();
+  for (int i = 0; i < m; ++i)
+  {
+    const int corner = static_cast<int>(corners[i] % 3);
+    keyed.emplace_back(this->Vertex(triangle(i), (corner + 1) % 3), i);
+    keyed.emplace_back(this->Vertex(triangle(i), (corner + 2) % 3), i);
+  }
+  std::sort(keyed.begin(), keyed.end());
+  for (size_t a = 0; a < keyed.size(); ++a)
+  {
+    for (size_t b = a + 1; b < keyed.size() && keyed[b].first == keyed[a].first; ++b)
+    {
+      const float* na = &this->FaceNormals[corners[keyed[a].second] / 3 * 3];
+      const float* nb = &this->FaceNormals[corners[keyed[b].second] / 3 * 3];
+      if (vtkMath::Dot(na, na) > 0.0f && vtkMath::Dot(na, nb) >= cosAngle)
       {
-        classes.Unite(keyed[i].second, keyed[i - 1].second);
+        classes.Unite(keyed[a].second, keyed[b].second);
       }
     }
-    // Triangles sharing an edge (v, x), by the other end x.
-    keyed.clear();
-    for (int i = 0; i < m; ++i)
+  }
+}
+
+//------------------------------------------------------------------------------
+// The classes of the m triangles around a vertex as its sides, numbered in the order met.
+void vtkApertureSurface::Build::SumSides(
+  const std::uint32_t* corners, int m, Classes& classes, Sides& sides) const
+{
+  sides.Of.resize(m);
+  sides.Sums.clear();
+  sides.Areas.clear();
+  std::fill(sides.VertexNormal, sides.VertexNormal + 3, 0.0);
+  sides.Total = 0.0;
+  std::vector<int> sideOfRoot(m, -1);
+  for (int i = 0; i < m; ++i)
+  {
+    const int root = classes.Find(i);
+    if (sideOfRoot[root] < 0)
     {
-      const int corner = static_cast<int>(corners[i] % 3);
-      keyed.emplace_back(this->Vertex(triangle(i), (corner + 1) % 3), i);
-      keyed.emplace_back(this->Vertex(triangle(i), (corner + 2) % 3), i);
+      sideOfRoot[root] = static_cast<int>(sides.Sums.size());
+      sides.Sums.push_back({ 0.0, 0.0, 0.0 });
+      sides.Areas.push_back(0.0);
     }
-    std::sort(keyed.begin(), keyed.end());
-    for (size_t a = 0; a < keyed.size(); ++a)
+    const int side = sides.Of[i] = sideOfRoot[root];
+    const float* n = &this->FaceNormals[corners[i] / 3 * 3];
+    const double area = this->FaceAreas[corners[i] / 3];
+    for (int k = 0; k < 3; ++k)
     {
-      for (size_t b = a + 1; b < keyed.size() && keyed[b].first == keyed[a].first; ++b)
-      {
-        const float* na = &this->FaceNormals[corners[keyed[a].second] / 3 * 3];
-        const float* nb = &this->FaceNormals[corners[keyed[b].second] / 3 * 3];
-        if (vtkMath::Dot(na, na) > 0.0f && vtkMath::Dot(na, nb) >= cosAngle)
-        {
-          classes.Unite(keyed[a].second, keyed[b].second);
-        }
-      }
+      sides.Sums[side][k] += n[k];
+      sides.VertexNormal[k] += area * n[k];
     }
-    // The sides: their sums of unit normals and their areas.
-    rootOf.resize(m);
-    sums.clear();
-    areas.clear();
-    sideOfRoot.assign(m, -1);
-    double vertexNormal[3] = { 0.0, 0.0, 0.0 }, total = 0.0;
-    for (int i = 0; i < m; ++i)
-    {
-      const int root = classes.Find(i);
-      if (sideOfRoot[root] < 0)
-      {
-        sideOfRoot[root] = static_cast<int>(sums.size());
-        sums.push_back({ 0.0, 0.0, 0.0 });
-        areas.push_back(0.0);
-      }
-      rootOf[i] = sideOfRoot[root];
-      const float* n = &this->FaceNormals[corners[i] / 3 * 3];
-      const double area = this->FaceAreas[corners[i] / 3];
-      for (int k = 0; k < 3; ++k)
-      {
-        sums[rootOf[i]][k] += n[k];
-        vertexNormal[k] += area * n[k];
-      }
-      areas[rootOf[i]] += area;
-      total += area;
-    }
-    this->MakeSidePoints(v, sums, areas, vertexNormal, total, pointOfSide);
-    for (int i = 0; i < m; ++i)
-    {
-      this->TriPoint[3 * triangle(i) + corners[i] % 3] = pointOfSide[rootOf[i]];
-    }
+    sides.Areas[side] += area;
+    sides.Total += area;
   }
 }
 
@@ -631,10 +822,13 @@ void vtkApertureSurface::Build::SidesFromCreases(double cosAngle)
 // One receiving point per side of a vertex, but a side without a direction, or a fold (a small
 // side facing against a clearly oriented vertex: a scan's folded triangle, not a crease), joins
 // the vertex's largest side.
-void vtkApertureSurface::Build::MakeSidePoints(vtkIdType v,
-  const std::vector<std::array<double, 3>>& sums, const std::vector<double>& areas,
-  const double vertexNormal[3], double total, std::vector<vtkIdType>& pointOfSide)
+void vtkApertureSurface::Build::MakeSidePoints(
+  vtkIdType v, const Sides& sides, std::vector<vtkIdType>& pointOfSide)
 {
+  const std::vector<std::array<double, 3>>& sums = sides.Sums;
+  const std::vector<double>& areas = sides.Areas;
+  const double* vertexNormal = sides.VertexNormal;
+  const double total = sides.Total;
   const size_t largest = std::max_element(areas.begin(), areas.end()) - areas.begin();
   const bool oriented = vtkMath::Norm(vertexNormal) > 0.5 * total;
   auto joins = [&](size_t s)
@@ -756,6 +950,27 @@ void vtkApertureSurface::Build::SidesFromNormals(vtkDataArray* normals, double c
 // and the geometry for Embree.
 void vtkApertureSurface::Build::MapInputPoints()
 {
+  this->PointOfEachInput();
+  this->CornerPoints();
+  if (this->S.BreakStrips)
+  {
+    this->StripTriangles();
+  }
+  for (const vtkIdType t : this->Geometry)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      this->S.Triangles.push_back(static_cast<std::uint32_t>(this->Vertex(t, k)));
+      this->S.CornerPoints.push_back(static_cast<std::uint32_t>(this->TriPoint[3 * t + k]));
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+// Each input point's receiving point: the first of its corners' sides, in their order; Invalid
+// where not finite or without a normal, NotOnSurface where in no cell.
+void vtkApertureSurface::Build::PointOfEachInput()
+{
   std::vector<vtkIdType>& map = this->S.InputPoints;
   map.assign(this->N, NotOnSurface);
   for (size_t c = 0; c < this->TriPoint.size(); ++c)
@@ -791,8 +1006,14 @@ void vtkApertureSurface::Build::MapInputPoints()
       ++this->S.UndefinedNormals;
     }
   }
-  // The cells' corners, and whether any of them splits its point or, in a strip, has triangles
-  // on different sides (the strip is then broken into triangles).
+}
+
+//------------------------------------------------------------------------------
+// The cells' corners' receiving points, and whether any of them splits its point or, in a strip,
+// has triangles on different sides (the strip is then broken into triangles).
+void vtkApertureSurface::Build::CornerPoints()
+{
+  const std::vector<vtkIdType>& map = this->S.InputPoints;
   std::vector<vtkIdType> corners(this->Corners, -1);
   for (size_t c = 0; c < this->TriPoint.size(); ++c)
   {
@@ -826,32 +1047,26 @@ void vtkApertureSurface::Build::MapInputPoints()
     this->S.PolyCorners.assign(corners.begin(), corners.begin() + polyCorners);
     this->S.StripCorners.assign(corners.begin() + polyCorners, corners.end());
   }
-  if (this->S.BreakStrips)
-  {
-    // Each strip triangle with three distinct points, with its strip and its corners' points.
-    for (size_t t = 0; t < this->TriCell.size(); ++t)
-    {
-      const std::uint32_t* in = &this->TriInput[3 * t];
-      if (this->TriCell[t] < this->Polygons || in[0] == in[1] || in[1] == in[2] || in[0] == in[2])
-      {
-        continue;
-      }
-      this->S.StripTriangles.push_back(this->TriCell[t] - this->Polygons);
-      for (int k = 0; k < 3; ++k)
-      {
-        this->S.StripTriangles.push_back(in[k]);
-        this->S.StripTriangles.push_back(
-          this->TriPoint[3 * t + k] >= 0 ? this->TriPoint[3 * t + k] : map[in[k]]);
-      }
-    }
-  }
+}
 
-  for (const vtkIdType t : this->Geometry)
+//------------------------------------------------------------------------------
+// Each strip triangle with three distinct points, with its strip and its corners' points.
+void vtkApertureSurface::Build::StripTriangles()
+{
+  const std::vector<vtkIdType>& map = this->S.InputPoints;
+  for (size_t t = 0; t < this->TriCell.size(); ++t)
   {
+    const std::uint32_t* in = &this->TriInput[3 * t];
+    if (this->TriCell[t] < this->Polygons || in[0] == in[1] || in[1] == in[2] || in[0] == in[2])
+    {
+      continue;
+    }
+    this->S.StripTriangles.push_back(this->TriCell[t] - this->Polygons);
     for (int k = 0; k < 3; ++k)
     {
-      this->S.Triangles.push_back(static_cast<std::uint32_t>(this->Vertex(t, k)));
-      this->S.CornerPoints.push_back(static_cast<std::uint32_t>(this->TriPoint[3 * t + k]));
+      this->S.StripTriangles.push_back(in[k]);
+      this->S.StripTriangles.push_back(
+        this->TriPoint[3 * t + k] >= 0 ? this->TriPoint[3 * t + k] : map[in[k]]);
     }
   }
 }
@@ -1001,57 +1216,35 @@ bool vtkApertureSurface::SetHeightField(vtkImageData* input, vtkDataArray* heigh
   }
   this->Allocate(n);
   std::copy_n(origin, 3, this->Origin);
+  std::vector<double> world;
+  std::vector<unsigned char> finite;
+  GridPoints(grid, heights, heightScale, world, finite);
   this->Vertices.assign(3 * n + 1, 0.0f);
-  std::vector<unsigned char> finite(n, 0);
-  std::vector<double> world(3 * n);
-  for (vtkIdType j = 0; j < grid.Ny; ++j)
+  for (vtkIdType id = 0; id < n; ++id)
   {
-    for (vtkIdType i = 0; i < grid.Nx; ++i)
+    for (int k = 0; k < 3 && finite[id]; ++k)
     {
-      const vtkIdType id = i + j * grid.Nx;
-      double* p = &world[3 * id];
-      grid.Point(i, j, heightScale * heights->GetComponent(id, 0), p);
-      finite[id] = IsFinite(p);
-      for (int k = 0; k < 3 && finite[id]; ++k)
-      {
-        this->Vertices[3 * id + k] = static_cast<float>(p[k] - origin[k]);
-      }
-      this->NonFinitePoints += finite[id] ? 0 : 1;
+      this->Vertices[3 * id + k] = static_cast<float>(world[3 * id + k] - origin[k]);
     }
+    this->NonFinitePoints += finite[id] ? 0 : 1;
   }
-
-  // Wind the triangles so that their normals point along the grid's third axis.
-  const double cross[3] = { grid.I[1] * grid.J[2] - grid.I[2] * grid.J[1],
-    grid.I[2] * grid.J[0] - grid.I[0] * grid.J[2], grid.I[0] * grid.J[1] - grid.I[1] * grid.J[0] };
-  const bool flip = vtkMath::Dot(cross, grid.Up) < 0.0;
-  this->Triangles.reserve(6 * (grid.Nx - 1) * (grid.Ny - 1));
-  auto addTriangle = [&](vtkIdType a, vtkIdType b, vtkIdType c)
-  {
-    if (finite[a] && finite[b] && finite[c])
-    {
-      for (const vtkIdType corner : { a, flip ? c : b, flip ? b : c })
-      {
-        this->Triangles.push_back(static_cast<std::uint32_t>(corner));
-      }
-    }
-  };
-  for (vtkIdType j = 0; j + 1 < grid.Ny; ++j)
-  {
-    for (vtkIdType i = 0; i + 1 < grid.Nx; ++i)
-    {
-      const vtkIdType p00 = i + j * grid.Nx;
-      addTriangle(p00, p00 + 1, p00 + 1 + grid.Nx);
-      addTriangle(p00, p00 + 1 + grid.Nx, p00 + grid.Nx);
-    }
-  }
+  this->Triangles = GridTriangles(grid, finite);
   if (this->Triangles.empty())
   {
     error = "the height field has no finite cell";
     return false;
   }
   this->CornerPoints = this->Triangles;
+  this->SetGridPoints(input, world, finite);
+  return true;
+}
 
-  // One receiving point per grid point: the given normal, or the sum of its triangles' normals.
+//------------------------------------------------------------------------------
+// One receiving point per grid point: the given normal, or the sum of its triangles' normals.
+void vtkApertureSurface::SetGridPoints(
+  vtkImageData* input, const std::vector<double>& world, const std::vector<unsigned char>& finite)
+{
+  const vtkIdType n = static_cast<vtkIdType>(finite.size());
   const std::vector<double> sums = this->WindingNormals(n);
   vtkDataArray* given = UsableNormals(input);
   this->NormalsComputed = given == nullptr;
@@ -1081,7 +1274,6 @@ bool vtkApertureSurface::SetHeightField(vtkImageData* input, vtkDataArray* heigh
   {
     this->CountFlippedNormals();
   }
-  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -1234,55 +1426,16 @@ void vtkApertureSurface::MakeOutput(
   {
     return;
   }
-  // One new point per input point and receiving point other than its own, in corner order.
-  const vtkIdType n = input->GetNumberOfPoints();
-  std::unordered_map<std::uint64_t, vtkIdType> added;
-  vtkNew<vtkIdList> from, to;
-  auto outputPoint = [&](vtkIdType id, vtkIdType point)
-  {
-    if (point == this->InputPoints[id] || point < 0)
-    {
-      return id;
-    }
-    const std::uint64_t key = static_cast<std::uint64_t>(id) << 32 | std::uint64_t(point);
-    auto inserted = added.emplace(key, n + static_cast<vtkIdType>(added.size()));
-    if (inserted.second)
-    {
-      from->InsertNextId(id);
-      to->InsertNextId(inserted.first->second);
-      outputPoints.push_back(point);
-    }
-    return inserted.first->second;
-  };
-  auto renumber = [&](vtkCellArray* cells, const std::vector<vtkIdType>& corners)
-  {
-    auto result = vtkSmartPointer<vtkCellArray>::New();
-    result->DeepCopy(cells);
-    vtkIdType c = 0;
-    vtkIdType npts;
-    const vtkIdType* ids;
-    std::vector<vtkIdType> renumbered;
-    for (vtkIdType cell = 0; cell < result->GetNumberOfCells(); ++cell)
-    {
-      result->GetCellAtId(cell, npts, ids);
-      renumbered.assign(ids, ids + npts);
-      for (vtkIdType k = 0; k < npts; ++k, ++c)
-      {
-        renumbered[k] = outputPoint(ids[k], corners[c]);
-      }
-      result->ReplaceCellAtId(cell, npts, renumbered.data());
-    }
-    return result;
-  };
-  vtkSmartPointer<vtkCellArray> polys = renumber(input->GetPolys(), this->PolyCorners);
+  PointSplitter splitter(input->GetNumberOfPoints(), this->InputPoints, outputPoints);
+  vtkSmartPointer<vtkCellArray> polys = splitter.Renumber(input->GetPolys(), this->PolyCorners);
   if (this->BreakStrips)
   {
     // Strips crossing a crease become their triangles, after the polygons.
     for (size_t t = 0; t < this->StripTriangles.size(); t += 7)
     {
       const vtkIdType* triangle = &this->StripTriangles[t + 1];
-      const vtkIdType ids[3] = { outputPoint(triangle[0], triangle[1]),
-        outputPoint(triangle[2], triangle[3]), outputPoint(triangle[4], triangle[5]) };
+      const vtkIdType ids[3] = { splitter.Point(triangle[0], triangle[1]),
+        splitter.Point(triangle[2], triangle[3]), splitter.Point(triangle[4], triangle[5]) };
       polys->InsertNextCell(3, ids);
     }
     output->SetStrips(vtkSmartPointer<vtkCellArray>::New());
@@ -1290,30 +1443,10 @@ void vtkApertureSurface::MakeOutput(
   }
   else
   {
-    output->SetStrips(renumber(input->GetStrips(), this->StripCorners));
+    output->SetStrips(splitter.Renumber(input->GetStrips(), this->StripCorners));
   }
   output->SetPolys(polys);
-
-  // The new points copy their originals, with all their data.
-  const vtkIdType total = n + from->GetNumberOfIds();
-  vtkNew<vtkPoints> points;
-  points->SetDataType(input->GetPoints()->GetDataType());
-  points->SetNumberOfPoints(total);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    points->SetPoint(i, input->GetPoint(i));
-  }
-  for (vtkIdType k = 0; k < from->GetNumberOfIds(); ++k)
-  {
-    points->SetPoint(to->GetId(k), input->GetPoint(from->GetId(k)));
-  }
-  output->SetPoints(points);
-  vtkNew<vtkPointData> pd;
-  pd->CopyAllOn(vtkDataSetAttributes::COPYTUPLE);
-  pd->CopyAllocate(input->GetPointData(), total);
-  pd->CopyData(input->GetPointData(), 0, n, 0);
-  pd->CopyData(input->GetPointData(), from, to);
-  output->GetPointData()->ShallowCopy(pd);
+  splitter.CopyPoints(input, output);
 }
 
 //------------------------------------------------------------------------------

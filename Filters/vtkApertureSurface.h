@@ -207,6 +207,9 @@ private:
   friend struct Build;
 
   void Allocate(vtkIdType inputPoints);
+  // SetHeightField()'s receiving points, one per grid point (`world`: 3 each).
+  void SetGridPoints(vtkImageData* input, const std::vector<double>& world,
+    const std::vector<unsigned char>& finite);
   // Mean edge lengths of the vertices (the scale of the ray offsets).
   std::vector<float> EdgeLengths() const;
   // Per receiving point (of `points`), the sum of the unit normals of its triangles (3 each).
