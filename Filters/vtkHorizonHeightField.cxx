@@ -113,34 +113,35 @@ void ToWorld(vtkImageData* image, float* vectors, vtkIdType n)
       }
     });
 }
-}
 
-//------------------------------------------------------------------------------
-vtkIdType vtkHorizonHeightField::Compute(vtkImageData* image, vtkDataArray* heights,
-  const int extent[6], const Settings& settings, vtkPointData* output, std::string& error,
-  const std::function<bool(double fraction)>& progress)
+// The texels the sweeps read for `extent`: grown by the search radius, within the image (which
+// may hold more than the pipeline asked for); false, with `error`, for an extent outside it.
+bool SweepWindow(vtkImageData* image, const int extent[6], double maximumDistance, int window[4],
+  std::string& error)
 {
-  // The texels that can matter: the extent grown by the search radius, within the image (which
-  // may hold more than the pipeline asked for).
   const int* whole = image->GetExtent();
-  const int halo = Halo(settings.MaximumDistance, image->GetSpacing());
-  int window[4];
+  const int halo = vtkHorizonHeightField::Halo(maximumDistance, image->GetSpacing());
   for (int k = 0; k < 4; ++k)
   {
     const int grown = k % 2 ? extent[k] + halo : extent[k] - halo;
     window[k] = halo < 0 ? whole[k] : k % 2 ? std::min(whole[k], grown) : std::max(whole[k], grown);
   }
-  vtkHorizonApertures::Grid grid;
-  grid.Nx = window[1] - window[0] + 1;
-  grid.Ny = window[3] - window[2] + 1;
-  if (grid.Nx < 1 || grid.Ny < 1 || extent[0] < whole[0] || extent[1] > whole[1] ||
-    extent[2] < whole[2] || extent[3] > whole[3])
+  if (window[1] < window[0] || window[3] < window[2] || extent[0] < whole[0] ||
+    extent[1] > whole[1] || extent[2] < whole[2] || extent[3] > whole[3])
   {
     error = "The extent asked for lies outside the image.";
-    return -1;
+    return false;
   }
-  std::vector<float> z;
-  std::vector<unsigned char> valid;
+  return true;
+}
+
+// The sweeps' grid of `window` (heights in `z`, no-data in `valid`), computing `extent`.
+bool MakeGrid(vtkImageData* image, vtkDataArray* heights, const int extent[6], const int window[4],
+  const vtkHorizonHeightField::Settings& settings, std::vector<float>& z,
+  std::vector<unsigned char>& valid, vtkHorizonApertures::Grid& grid, std::string& error)
+{
+  grid.Nx = window[1] - window[0] + 1;
+  grid.Ny = window[3] - window[2] + 1;
   try
   {
     CopyWindow(image, heights, settings.HeightScale, window, z, valid);
@@ -149,7 +150,7 @@ vtkIdType vtkHorizonHeightField::Compute(vtkImageData* image, vtkDataArray* heig
   {
     error = "There is not enough memory for the " + std::to_string(grid.Nx) + " x " +
       std::to_string(grid.Ny) + " texels' heights; set a MaximumDistance and stream in tiles.";
-    return -1;
+    return false;
   }
   grid.Heights = z.data();
   grid.Valid = valid.empty() ? nullptr : valid.data();
@@ -162,53 +163,94 @@ vtkIdType vtkHorizonHeightField::Compute(vtkImageData* image, vtkDataArray* heig
   std::copy(local, local + 4, grid.OutputExtent);
   grid.Origin[0] = window[0];
   grid.Origin[1] = window[2];
+  return true;
+}
 
+// The output arrays of Compute(), allocated, filled through Buffers() and added to the output.
+struct Results
+{
+  vtkSmartPointer<vtkFloatArray> Bent, Radius, Normals, Occlusion;
+  vtkNew<vtkUnsignedCharArray> Mask;
+
+  bool Allocate(const vtkHorizonHeightField::Settings& settings, vtkIdType texels)
+  {
+    this->Bent = NewArray(settings.BentNormalName, 3, texels);
+    this->Radius = NewArray(settings.RadiusName, 1, texels);
+    this->Normals = NewArray("Normals", 3, texels);
+    this->Occlusion =
+      settings.AmbientOcclusion ? NewArray(settings.OcclusionName, 1, texels) : nullptr;
+    this->Mask->SetName(vtkHorizonHeightField::ValidMaskName());
+    if (!this->Bent || !this->Radius || !this->Normals ||
+      (settings.AmbientOcclusion && !this->Occlusion) || !this->Mask->Allocate(texels))
+    {
+      return false;
+    }
+    this->Mask->SetNumberOfTuples(texels);
+    return true;
+  }
+
+  vtkHorizonApertures::Buffers Buffers() const
+  {
+    return { this->Bent->GetPointer(0), this->Radius->GetPointer(0),
+      this->Occlusion ? this->Occlusion->GetPointer(0) : nullptr, this->Normals->GetPointer(0),
+      this->Mask->GetPointer(0) };
+  }
+
+  // Directions to world coordinates, arrays into `output`; returns the no-data texels.
+  vtkIdType AddTo(vtkImageData* image, vtkPointData* output)
+  {
+    const vtkIdType texels = this->Radius->GetNumberOfTuples();
+    ToWorld(image, this->Bent->GetPointer(0), texels);
+    ToWorld(image, this->Normals->GetPointer(0), texels);
+    output->AddArray(this->Bent);
+    output->AddArray(this->Radius);
+    if (this->Occlusion)
+    {
+      output->AddArray(this->Occlusion);
+    }
+    if (!output->GetNormals())
+    {
+      output->SetNormals(this->Normals); // the normals used, unless the input brings its own
+    }
+    const unsigned char* mask = this->Mask->GetPointer(0);
+    const vtkIdType noData = texels - std::count(mask, mask + texels, 1);
+    if (noData > 0)
+    {
+      output->AddArray(this->Mask);
+    }
+    return noData;
+  }
+};
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkHorizonHeightField::Compute(vtkImageData* image, vtkDataArray* heights,
+  const int extent[6], const Settings& settings, vtkPointData* output, std::string& error,
+  const std::function<bool(double fraction)>& progress)
+{
+  int window[4];
+  std::vector<float> z;
+  std::vector<unsigned char> valid;
+  vtkHorizonApertures::Grid grid;
   vtkIdType nx = 0, ny = 0;
-  if (!vtkHorizonApertures::GetOutputSize(grid, nx, ny, error))
+  if (!SweepWindow(image, extent, settings.MaximumDistance, window, error) ||
+    !MakeGrid(image, heights, extent, window, settings, z, valid, grid, error) ||
+    !vtkHorizonApertures::GetOutputSize(grid, nx, ny, error))
   {
     return -1;
   }
-  const vtkIdType texels = nx * ny;
-  auto bent = NewArray(settings.BentNormalName, 3, texels);
-  auto radius = NewArray(settings.RadiusName, 1, texels);
-  auto normals = NewArray("Normals", 3, texels);
-  vtkSmartPointer<vtkFloatArray> occlusion =
-    settings.AmbientOcclusion ? NewArray(settings.OcclusionName, 1, texels) : nullptr;
-  vtkNew<vtkUnsignedCharArray> mask;
-  mask->SetName(ValidMaskName());
-  if (!bent || !radius || !normals || (settings.AmbientOcclusion && !occlusion) ||
-    !mask->Allocate(texels))
+  Results results;
+  if (!results.Allocate(settings, nx * ny))
   {
-    error = "There is not enough memory for the apertures of " + std::to_string(texels) +
+    error = "There is not enough memory for the apertures of " + std::to_string(nx * ny) +
       " texels; set a MaximumDistance and stream in tiles.";
     return -1;
   }
-  mask->SetNumberOfTuples(texels);
-  const vtkHorizonApertures::Buffers buffers{ bent->GetPointer(0), radius->GetPointer(0),
-    occlusion ? occlusion->GetPointer(0) : nullptr, normals->GetPointer(0), mask->GetPointer(0) };
-  if (!vtkHorizonApertures::Compute(grid, buffers, error, progress))
+  if (!vtkHorizonApertures::Compute(grid, results.Buffers(), error, progress))
   {
     return -1;
   }
-  ToWorld(image, bent->GetPointer(0), texels);
-  ToWorld(image, normals->GetPointer(0), texels);
-  output->AddArray(bent);
-  output->AddArray(radius);
-  if (occlusion)
-  {
-    output->AddArray(occlusion);
-  }
-  if (!output->GetNormals())
-  {
-    output->SetNormals(normals); // the normals used, unless the input brings its own
-  }
-  const vtkIdType noData =
-    texels - std::count(mask->GetPointer(0), mask->GetPointer(0) + texels, 1);
-  if (noData > 0)
-  {
-    output->AddArray(mask);
-  }
-  return noData;
+  return results.AddTo(image, output);
 }
 
 //------------------------------------------------------------------------------

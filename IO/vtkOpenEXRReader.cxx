@@ -170,113 +170,149 @@ std::int32_t Int32At(const char* p)
     (std::uint32_t(b[2]) << 16) | (std::uint32_t(b[3]) << 24));
 }
 
+// The value of one header attribute: windows and tiles within maximumSide, chunk counts within
+// the file's bytes.
+bool CheckAttribute(const std::string& attribute, const std::string& type, const char* value,
+  std::int32_t length, uint64_t size, int maximumSide, std::string& error)
+{
+  if ((attribute == "dataWindow" || attribute == "displayWindow") && type == "box2i" &&
+    length == 16)
+  {
+    const vtkTypeInt64 width = vtkTypeInt64(Int32At(value + 8)) - Int32At(value) + 1;
+    const vtkTypeInt64 height = vtkTypeInt64(Int32At(value + 12)) - Int32At(value + 4) + 1;
+    if (width < 1 || height < 1 || width > maximumSide || height > maximumSide)
+    {
+      error = "its " + attribute + " is " + std::to_string(width) + " x " + std::to_string(height) +
+        ": sides from 1 to " + std::to_string(maximumSide) + " are allowed";
+      return false;
+    }
+  }
+  else if (attribute == "tiles" && type == "tiledesc" && length == 9)
+  {
+    const vtkTypeInt64 tileWidth = static_cast<std::uint32_t>(Int32At(value));
+    const vtkTypeInt64 tileHeight = static_cast<std::uint32_t>(Int32At(value + 4));
+    if (tileWidth < 1 || tileHeight < 1 || tileWidth > maximumSide || tileHeight > maximumSide)
+    {
+      error = "its tiles are " + std::to_string(tileWidth) + " x " + std::to_string(tileHeight) +
+        ": sides from 1 to " + std::to_string(maximumSide) + " are allowed";
+      return false;
+    }
+  }
+  else if (attribute == "chunkCount" && type == "int" && length == 4 &&
+    (Int32At(value) < 0 || static_cast<uint64_t>(Int32At(value)) > size / 8))
+  {
+    error = "its chunk count, " + std::to_string(Int32At(value)) +
+      ", does not fit in the file (truncated or damaged)";
+    return false;
+  }
+  return true;
+}
+
 // Walks the headers before the library reads them. The library allocates what an attribute's
 // size field says before reading its value, and its chunk tables from the windows and the chunk
 // count, so a few damaged bytes could make it ask for gigabytes. Here every attribute must lie
-// within the bytes, the windows and tiles within maximumSide, and chunk counts within the bytes.
-bool CheckHeaders(const char* data, uint64_t size, int maximumSide, std::string& error)
+// within the bytes, and pass CheckAttribute().
+class HeaderWalk
 {
-  if (size < 8)
+public:
+  HeaderWalk(const char* data, uint64_t size, int maximumSide)
+    : Data(data)
+    , Size(size)
+    , MaximumSide(maximumSide)
   {
-    error = "the file ends inside its version field (truncated)";
-    return false;
   }
-  const std::int32_t version = Int32At(data + 4);
-  if ((version & 0xff) != 2)
+
+  bool Check(std::string& error)
   {
-    error = "OpenEXR format version " + std::to_string(version & 0xff) + " is not supported";
-    return false;
-  }
-  const bool multipart = (version & 0x1000) != 0;
-  const uint64_t longestName = (version & 0x400) ? 255 : 31;
-  uint64_t at = 8;
-  auto name = [&](std::string& text)
-  {
-    const uint64_t end = std::min(size, at + longestName + 1);
-    const void* zero = std::memchr(data + at, 0, static_cast<size_t>(end - at));
-    if (!zero)
+    if (this->Size < 8)
     {
+      error = "the file ends inside its version field (truncated)";
       return false;
     }
-    text.assign(data + at, static_cast<const char*>(zero));
-    at += text.size() + 1;
-    return !text.empty();
-  };
-  for (int part = 0;; ++part)
+    const std::int32_t version = Int32At(this->Data + 4);
+    if ((version & 0xff) != 2)
+    {
+      error = "OpenEXR format version " + std::to_string(version & 0xff) + " is not supported";
+      return false;
+    }
+    const bool multipart = (version & 0x1000) != 0;
+    this->LongestName = (version & 0x400) ? 255 : 31;
+    this->At = 8;
+    // Multi-part files list headers until an empty one.
+    while (this->Header(error))
+    {
+      if (!multipart || (this->At < this->Size && this->Data[this->At] == 0))
+      {
+        return true;
+      }
+      if (this->At >= this->Size)
+      {
+        error = "the file ends inside its headers (truncated)";
+        return false;
+      }
+    }
+    return false;
+  }
+
+private:
+  // One header: attributes up to a zero byte.
+  bool Header(std::string& error)
   {
     while (true)
     {
-      if (at >= size)
+      if (this->At >= this->Size)
       {
         error = "the file ends inside its header (truncated)";
         return false;
       }
-      if (data[at] == 0)
+      if (this->Data[this->At] == 0)
       {
-        ++at;
-        break;
+        ++this->At;
+        return true;
       }
       std::string attribute, type;
-      if (!name(attribute) || !name(type) || size - at < 4)
+      if (!this->Name(attribute) || !this->Name(type) || this->Size - this->At < 4)
       {
         error = "its header is damaged (an attribute without a valid name or type)";
         return false;
       }
-      const std::int32_t length = Int32At(data + at);
-      at += 4;
-      if (length < 0 || static_cast<uint64_t>(length) > size - at)
+      const std::int32_t length = Int32At(this->Data + this->At);
+      this->At += 4;
+      if (length < 0 || static_cast<uint64_t>(length) > this->Size - this->At)
       {
         error = "its header attribute '" + attribute + "' claims " + std::to_string(length) +
           " bytes, more than the file holds (truncated or damaged)";
         return false;
       }
-      const char* value = data + at;
-      if ((attribute == "dataWindow" || attribute == "displayWindow") && type == "box2i" &&
-        length == 16)
+      if (!CheckAttribute(
+            attribute, type, this->Data + this->At, length, this->Size, this->MaximumSide, error))
       {
-        const vtkTypeInt64 width = vtkTypeInt64(Int32At(value + 8)) - Int32At(value) + 1;
-        const vtkTypeInt64 height = vtkTypeInt64(Int32At(value + 12)) - Int32At(value + 4) + 1;
-        if (width < 1 || height < 1 || width > maximumSide || height > maximumSide)
-        {
-          error = "its " + attribute + " is " + std::to_string(width) + " x " +
-            std::to_string(height) + ": sides from 1 to " + std::to_string(maximumSide) +
-            " are allowed";
-          return false;
-        }
-      }
-      else if (attribute == "tiles" && type == "tiledesc" && length == 9)
-      {
-        const vtkTypeInt64 tileWidth = static_cast<std::uint32_t>(Int32At(value));
-        const vtkTypeInt64 tileHeight = static_cast<std::uint32_t>(Int32At(value + 4));
-        if (tileWidth < 1 || tileHeight < 1 || tileWidth > maximumSide || tileHeight > maximumSide)
-        {
-          error = "its tiles are " + std::to_string(tileWidth) + " x " +
-            std::to_string(tileHeight) + ": sides from 1 to " + std::to_string(maximumSide) +
-            " are allowed";
-          return false;
-        }
-      }
-      else if (attribute == "chunkCount" && type == "int" && length == 4 &&
-        (Int32At(value) < 0 || static_cast<uint64_t>(Int32At(value)) > size / 8))
-      {
-        error = "its chunk count, " + std::to_string(Int32At(value)) +
-          ", does not fit in the file (truncated or damaged)";
         return false;
       }
-      at += static_cast<uint64_t>(length);
-    }
-    // Multi-part files list headers until an empty one.
-    if (!multipart || (at < size && data[at] == 0))
-    {
-      return true;
-    }
-    if (at >= size)
-    {
-      error = "the file ends inside its headers (truncated)";
-      return false;
+      this->At += static_cast<uint64_t>(length);
     }
   }
-}
+
+  // A zero-terminated, non-empty name of at most LongestName characters.
+  bool Name(std::string& text)
+  {
+    const uint64_t end = std::min(this->Size, this->At + this->LongestName + 1);
+    const void* zero = std::memchr(this->Data + this->At, 0, static_cast<size_t>(end - this->At));
+    if (!zero)
+    {
+      return false;
+    }
+    text.assign(this->Data + this->At, static_cast<const char*>(zero));
+    this->At += text.size() + 1;
+    return !text.empty();
+  }
+
+  const char* Data;
+  const uint64_t Size;
+  const int MaximumSide;
+  uint64_t LongestName = 31;
+  uint64_t At = 8;
+};
 
 // Opens the EXR (after the checks a reader can make without the library), or returns nullptr
 // with the reason.
@@ -308,7 +344,7 @@ std::unique_ptr<Imf::InputFile> Open(const std::string& fileName, const void* bu
     error = what + " is not an OpenEXR file";
     return nullptr;
   }
-  if (!CheckHeaders(source.Data, source.Size, maximumSide, error))
+  if (!HeaderWalk(source.Data, source.Size, maximumSide).Check(error))
   {
     error = what + " cannot be read as OpenEXR: " + error;
     return nullptr;
