@@ -95,6 +95,16 @@ void SortTriangles(const std::vector<float>& points, std::vector<std::uint32_t>&
   triangles.swap(sorted);
 }
 
+Directions AllDirections(vtkLightSphere* sphere)
+{
+  Directions directions(sphere->GetNumberOfDirections());
+  for (size_t j = 0; j < directions.size(); ++j)
+  {
+    sphere->GetDirection(static_cast<int>(j), directions[j].data());
+  }
+  return directions;
+}
+
 bool Bit(const Bits& bits, vtkIdType i)
 {
   return (bits[i / 64] >> (i % 64)) & 1u;
@@ -287,37 +297,10 @@ void vtkOcclusionQueryVisibility::ReleaseGraphicsResources(vtkWindow* window)
 bool vtkOcclusionQueryVisibility::PrepareOpenGL(bool needStorage, std::string& error)
 {
   vtkInternals& in = *this->Internals;
-  // The OpenGL context: the caller's window, or an off-screen one of our own.
-  vtkRenderWindow* window = this->GetRenderWindow();
-  if (!window)
+  vtkOpenGLRenderWindow* glWindow = this->OpenGLWindow(needStorage, error);
+  if (!glWindow || in.Uploaded)
   {
-    if (!this->OwnWindow && !(this->OwnWindow = vtkApertureDisplay::NewOffScreenWindow(error)))
-    {
-      return false;
-    }
-    window = this->OwnWindow;
-  }
-  auto* glWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
-  if (!glWindow)
-  {
-    error =
-      std::string("The render window is not an OpenGL window (") + window->GetClassName() + ").";
-    return false;
-  }
-  glWindow->Initialize();
-  glWindow->MakeCurrent();
-  const std::string missing = vtkVisibilityScene::Missing(needStorage);
-  if (!missing.empty())
-  {
-    error = std::string("The ") +
-      (this->Backend == DEPTH_COMPARE ? "DepthCompare backend"
-                                      : "camera pass of vertex filtering") +
-      " needs " + missing + ", which this OpenGL context lacks.";
-    return false;
-  }
-  if (in.Uploaded)
-  {
-    return true;
+    return glWindow != nullptr;
   }
   if (!in.SceneBuilt)
   {
@@ -338,6 +321,40 @@ bool vtkOcclusionQueryVisibility::PrepareOpenGL(bool needStorage, std::string& e
   this->UploadedBytes = in.GLScene.GetUploadedBytes();
   in.Uploaded = true;
   return true;
+}
+
+//------------------------------------------------------------------------------
+vtkOpenGLRenderWindow* vtkOcclusionQueryVisibility::OpenGLWindow(
+  bool needStorage, std::string& error)
+{
+  vtkRenderWindow* window = this->GetRenderWindow();
+  if (!window)
+  {
+    if (!this->OwnWindow && !(this->OwnWindow = vtkApertureDisplay::NewOffScreenWindow(error)))
+    {
+      return nullptr;
+    }
+    window = this->OwnWindow;
+  }
+  auto* glWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
+  if (!glWindow)
+  {
+    error =
+      std::string("The render window is not an OpenGL window (") + window->GetClassName() + ").";
+    return nullptr;
+  }
+  glWindow->Initialize();
+  glWindow->MakeCurrent();
+  const std::string missing = vtkVisibilityScene::Missing(needStorage);
+  if (!missing.empty())
+  {
+    error = std::string("The ") +
+      (this->Backend == DEPTH_COMPARE ? "DepthCompare backend"
+                                      : "camera pass of vertex filtering") +
+      " needs " + missing + ", which this OpenGL context lacks.";
+    return nullptr;
+  }
+  return glWindow;
 }
 
 //------------------------------------------------------------------------------
@@ -890,11 +907,7 @@ int vtkOcclusionQueryVisibility::RequestData(
   // 3. The directions of the level that points lack, by the backend.
   vtkNew<vtkLightSphere> sphere;
   sphere->SetLevel(this->Level);
-  Directions directions(sphere->GetNumberOfDirections());
-  for (size_t j = 0; j < directions.size(); ++j)
-  {
-    sphere->GetDirection(static_cast<int>(j), directions[j].data());
-  }
+  const Directions directions = AllDirections(sphere);
   this->UpdateProgress(0.0);
   bool aborted = false;
   if (!this->ComputeMissing(directions, aborted, error))
@@ -908,7 +921,7 @@ int vtkOcclusionQueryVisibility::RequestData(
     output->Initialize();
     return 1;
   }
-  // 4. The output.
+  // 4. The output, and a word on points left out.
   this->WriteOutputs(input, output, sphere, directions);
   if (in.Receivers.NonFinitePoints > 0)
   {

@@ -88,6 +88,7 @@
 
 class vtkLightSphere;
 class vtkMultiProcessController;
+class vtkOpenGLRenderWindow;
 class vtkProp3D;
 class vtkRenderWindow;
 class vtkRenderer;
@@ -308,6 +309,9 @@ private:
     const std::function<bool(size_t)>& progress, std::string& error);
   // The OpenGL window and the scene on it; false with an error when there is none.
   bool PrepareOpenGL(bool needStorage, std::string& error);
+  // The window whose context the passes use (current), the caller's or one of our own, with
+  // what the passes need; nullptr with an error otherwise.
+  vtkOpenGLRenderWindow* OpenGLWindow(bool needStorage, std::string& error);
   // The points, vertices and triangles the OpenGL passes draw.
   void BuildOpenGLScene();
   void WriteOutputs(vtkPolyData* input, vtkPolyData* output, vtkLightSphere* sphere,

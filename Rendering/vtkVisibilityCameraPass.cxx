@@ -12,7 +12,6 @@
 
 #include "vtkVisibilityCameraFS.h"
 #include "vtkVisibilityScene.h"
-#include "vtkVisibilitySceneVS.h"
 
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -85,8 +84,9 @@ bool vtkVisibilityCameraPass::Prepare(int width, int height,
   }
   this->Scene.GetWindow()->MakeCurrent();
   if ((!queries &&
-        !this->Scene.ReadyProgram(this->Program, this->VAO, vtkVisibilitySceneVS,
-          vtkVisibilityCameraFS, "camera-view", error)) ||
+        !this->Scene.ReadyProgram(this->Program, this->VAO,
+          vtkVisibilityScene::PointsVS430().c_str(), vtkVisibilityCameraFS, "camera-view",
+          error)) ||
     !this->Scene.DepthTarget(this->Depth, this->Framebuffer, width, height, "camera-view", error))
   {
     return false;

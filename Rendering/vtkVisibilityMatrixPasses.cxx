@@ -14,7 +14,6 @@
 #include "vtkVisibilityCompareVS.h"
 #include "vtkVisibilityPairFS.h"
 #include "vtkVisibilityScene.h"
-#include "vtkVisibilitySceneVS.h"
 
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -374,8 +373,9 @@ void vtkVisibilityMatrixPasses::ReadSlots(
 //------------------------------------------------------------------------------
 bool vtkVisibilityMatrixPasses::PreparePairs(std::string& error)
 {
-  if (!this->Scene.ReadyProgram(this->PairProgram, this->PairVAO, vtkVisibilitySceneVS,
-        vtkVisibilityPairFS, "nearest-and-farthest", error) ||
+  if (!this->Scene.ReadyProgram(this->PairProgram, this->PairVAO,
+        vtkVisibilityScene::PointsVS430().c_str(), vtkVisibilityPairFS, "nearest-and-farthest",
+        error) ||
     !this->Scene.ReadyProgram(this->CompareProgram, this->CompareVAO, vtkVisibilityCompareVS,
       vtkVisibilityCompareFS, "depth-compare", error))
   {
@@ -394,26 +394,15 @@ bool vtkVisibilityMatrixPasses::PreparePairs(std::string& error)
       return false;
     }
   }
-  if (!this->PairFramebuffer)
-  {
-    this->PairFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-    this->PairFramebuffer->SetContext(this->Scene.GetWindow());
-  }
-  vtkOpenGLState* state = this->Scene.GetWindow()->GetState();
-  state->PushFramebufferBindings();
-  this->PairFramebuffer->Bind();
-  this->PairFramebuffer->AddColorAttachment(0, this->Nearest);
-  this->PairFramebuffer->AddColorAttachment(1, this->Farthest);
-  this->PairFramebuffer->ActivateDrawBuffers(2);
-  const char* status = nullptr;
-  const bool complete = vtkOpenGLFramebufferObject::GetFrameBufferStatus(GL_FRAMEBUFFER, status);
-  state->PopFramebufferBindings();
-  if (!complete)
-  {
-    error = std::string("the nearest-and-farthest framebuffer is incomplete (") +
-      (status ? status : "") + ")";
-  }
-  return complete;
+  return this->Scene.Attach(
+    this->PairFramebuffer,
+    [this](vtkOpenGLFramebufferObject* bound)
+    {
+      bound->AddColorAttachment(0, this->Nearest);
+      bound->AddColorAttachment(1, this->Farthest);
+      bound->ActivateDrawBuffers(2);
+    },
+    "nearest-and-farthest", error);
 }
 
 //------------------------------------------------------------------------------

@@ -145,6 +145,14 @@ void vtkVisibilityScene::DrawTriangles(vtkOpenGLVertexArrayObject* vao)
 }
 
 //------------------------------------------------------------------------------
+std::string vtkVisibilityScene::PointsVS430()
+{
+  std::string vs = vtkVisibilityDepthVS;
+  vtkShaderProgram::Substitute(vs, "//VTK::System::Dec", "#version 430 core");
+  return vs;
+}
+
+//------------------------------------------------------------------------------
 bool vtkVisibilityScene::ReadyProgram(vtkSmartPointer<vtkShaderProgram>& program,
   vtkSmartPointer<vtkOpenGLVertexArrayObject>& vao, const char* vs, const char* fs,
   const char* what, std::string& error)
@@ -193,25 +201,15 @@ bool vtkVisibilityScene::DepthTarget(vtkSmartPointer<vtkTextureObject>& texture,
   }
   else
   {
-    if (!framebuffer)
-    {
-      framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-      framebuffer->SetContext(this->Window);
-    }
-    vtkOpenGLState* state = this->Window->GetState();
-    state->PushFramebufferBindings();
-    framebuffer->Bind();
-    framebuffer->AddDepthAttachment(texture);
-    framebuffer->DeactivateDrawBuffers();
-    framebuffer->DeactivateReadBuffer();
-    const char* status = nullptr;
-    ready = vtkOpenGLFramebufferObject::GetFrameBufferStatus(GL_FRAMEBUFFER, status);
-    state->PopFramebufferBindings();
-    if (!ready)
-    {
-      error =
-        std::string("the ") + what + " framebuffer is incomplete (" + (status ? status : "") + ")";
-    }
+    ready = this->Attach(
+      framebuffer,
+      [&texture](vtkOpenGLFramebufferObject* bound)
+      {
+        bound->AddDepthAttachment(texture);
+        bound->DeactivateDrawBuffers();
+        bound->DeactivateReadBuffer();
+      },
+      what, error);
   }
   if (!ready)
   {
@@ -219,6 +217,31 @@ bool vtkVisibilityScene::DepthTarget(vtkSmartPointer<vtkTextureObject>& texture,
     texture = nullptr;
   }
   return ready;
+}
+
+//------------------------------------------------------------------------------
+bool vtkVisibilityScene::Attach(vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer,
+  const std::function<void(vtkOpenGLFramebufferObject*)>& attach, const char* what,
+  std::string& error)
+{
+  if (!framebuffer)
+  {
+    framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    framebuffer->SetContext(this->Window);
+  }
+  vtkOpenGLState* state = this->Window->GetState();
+  state->PushFramebufferBindings();
+  framebuffer->Bind();
+  attach(framebuffer);
+  const char* status = nullptr;
+  const bool complete = vtkOpenGLFramebufferObject::GetFrameBufferStatus(GL_FRAMEBUFFER, status);
+  state->PopFramebufferBindings();
+  if (!complete)
+  {
+    error =
+      std::string("the ") + what + " framebuffer is incomplete (" + (status ? status : "") + ")";
+  }
+  return complete;
 }
 
 //------------------------------------------------------------------------------

@@ -103,6 +103,12 @@ public:
   void DrawTriangles(vtkOpenGLVertexArrayObject* vao);
 
   /**
+   * The depth pass's vertex shader (the scene's points placed by the uniform clipMatrix) in GLSL
+   * 4.30, for programs whose fragment shader needs that version.
+   */
+  static std::string PointsVS430();
+
+  /**
    * Compiles a program whose vertex shader takes the scene's points as vertexMC, with its vertex
    * array, unless `program` is set already. Both are kept only once complete, so that a failure
    * is met again, not skipped, next time.
@@ -119,6 +125,14 @@ public:
   bool DepthTarget(vtkSmartPointer<vtkTextureObject>& texture,
     vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer, int width, int height,
     const char* what, std::string& error);
+
+  /**
+   * Makes `framebuffer` (created when missing) with the attachments attach() adds while it is
+   * bound; false with `error` when it is incomplete.
+   */
+  bool Attach(vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer,
+    const std::function<void(vtkOpenGLFramebufferObject*)>& attach, const char* what,
+    std::string& error);
 
   /**
    * A new texture of the window in place of `texture` (whose resources are released): texels
