@@ -536,12 +536,10 @@ void vtkEnvironmentMap::CapIrradiance(const double axis[3], double r, double rgb
   {
     for (int column = 0; column < w; ++column)
     {
-      double d[3];
-      Local((column + 0.5) / w, (row + 0.5) / h, d);
-      const double c = vtkMath::Dot(a, d);
+      const size_t p = static_cast<size_t>(row) * w + column;
+      const double c = vtkMath::Dot(a, &this->PixelDirections[3 * p]);
       if (c >= cosR)
       {
-        const size_t p = static_cast<size_t>(row) * w + column;
         for (int k = 0; k < 3; ++k)
         {
           rgb[k] += this->Working[3 * p + k] * this->RowSolidAngle[row] * c;
@@ -571,14 +569,7 @@ vtkImageData* vtkEnvironmentMap::NewCapTable(int columns, int rows, int radii)
     return table;
   }
   const int w = WorkingWidth, h = WorkingHeight;
-  std::vector<double> pixels(static_cast<size_t>(w) * h * 3);
-  for (int row = 0; row < h; ++row)
-  {
-    for (int column = 0; column < w; ++column)
-    {
-      Local((column + 0.5) / w, (row + 0.5) / h, &pixels[3 * (row * w + column)]);
-    }
-  }
+  const double* pixels = this->PixelDirections.data();
   const double step = 0.5 * Pi / (radii - 1);
   float* out = values->GetPointer(0);
   // For each axis, every pixel within pi/2 adds to the first radius that contains it; the sums
@@ -597,7 +588,7 @@ vtkImageData* vtkEnvironmentMap::NewCapTable(int columns, int rows, int radii)
           for (int column = 0; column < w; ++column)
           {
             const size_t p = static_cast<size_t>(row) * w + column;
-            const double c = vtkMath::Dot(a, &pixels[3 * p]);
+            const double c = vtkMath::Dot(a, pixels + 3 * p);
             if (c <= 0.0)
             {
               continue;

@@ -17,6 +17,7 @@
 // otherwise it opens a window: press m to switch shading models, l/L to shrink or grow the
 // light, q to quit.
 
+#include "vtkApertureLightingInterface.h"
 #include "vtkApertureLightingMapper.h"
 #include "vtkAperturePrecompute.h"
 
@@ -58,7 +59,8 @@ void OnKey(vtkObject* caller, unsigned long, void* clientData, void*)
   const std::string key = static_cast<vtkRenderWindowInteractor*>(caller)->GetKeySym();
   if (key == "m")
   {
-    const int next = (scene->Mapper->GetShadingMode() + 1) % 5;
+    const int modes = vtkApertureLightingInterface::STANDARD + 1;
+    const int next = (scene->Mapper->GetShadingMode() + 1) % modes;
     scene->Mapper->SetShadingMode(next);
     std::cout << "shading: " << scene->Mapper->GetApertureLighting()->GetShadingModeAsString()
               << "\n";

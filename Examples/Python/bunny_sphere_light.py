@@ -18,7 +18,8 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkRenderWindow,
                                          vtkWindowToImageFilter)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL factory)
 
-from aperturelighting import vtkAperturePrecompute, vtkApertureLightingMapper
+from aperturelighting import (vtkAperturePrecompute, vtkApertureLightingInterface,
+                              vtkApertureLightingMapper)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DEFAULT_BUNNY = os.path.join(HERE, "..", "..", "Testing", "Data", "stanford-bunny.obj")
@@ -92,7 +93,8 @@ def main(bunny, picture=None):
     def on_key(caller, _event):
         key = caller.GetKeySym()
         if key == "m":
-            mapper.SetShadingMode((mapper.GetShadingMode() + 1) % 5)
+            modes = vtkApertureLightingInterface.STANDARD + 1
+            mapper.SetShadingMode((mapper.GetShadingMode() + 1) % modes)
             print("shading:", mapper.GetApertureLighting().GetShadingModeAsString())
         elif key in ("l", "L"):
             radius = vtkApertureLightingMapper.GetLightRadius(lamp)

@@ -13,6 +13,7 @@
 // radii: one warning, standard shading, never black, no crash.
 
 #include "vtkApertureLightingMapper.h"
+#include "vtkApertureTestHarness.h"
 
 #include "vtkActor.h"
 #include "vtkFloatArray.h"
@@ -36,6 +37,8 @@
 
 namespace
 {
+using vtkApertureTest::Check;
+
 // A sphere with valid apertures; `spoil` then breaks them.
 vtkSmartPointer<vtkPolyData> Sphere(const std::function<void(vtkPolyData*)>& spoil)
 {
@@ -122,7 +125,6 @@ int TestApertureLightingMapperBadInput(int, char*[])
       { pd->GetPointData()->GetArray("BentNormal")->SetComponent(3, 1, inf); } },
   };
 
-  int failures = 0;
   auto judge = [&](const std::string& name, const std::string& warning)
   {
     capture(image);
@@ -137,11 +139,7 @@ int TestApertureLightingMapperBadInput(int, char*[])
     const bool warned = observer->GetWarningMessage().find(warning) != std::string::npos;
     std::cout << name << ": warned " << warned << ", mean |image - standard| " << diff
               << "/255, mean value " << lit << "/255\n";
-    if (!warned || diff > 0.5 || lit < 10.0)
-    {
-      ++failures;
-      std::cerr << "FAIL " << name << ": needs one warning and standard shading\n";
-    }
+    Check(warned && diff <= 0.5 && lit >= 10.0, name + ": needs one warning and standard shading");
     observer->Clear();
   };
 
@@ -166,11 +164,7 @@ int TestApertureLightingMapperBadInput(int, char*[])
   capture(image);
   observer->Clear();
   window->Render();
-  if (observer->GetWarning())
-  {
-    ++failures;
-    std::cerr << "FAIL a persisting problem must warn only once\n";
-  }
+  Check(!observer->GetWarning(), "a persisting problem must warn only once");
 
   // Odd light radii: negative (no radius: the default), huge (clamped to a hemisphere).
   mapper->SetInputData(Sphere([](vtkPolyData*) {}));
@@ -189,11 +183,7 @@ int TestApertureLightingMapperBadInput(int, char*[])
     }
     std::cout << "light radius " << radius << ": mean value " << lit / image->GetNumberOfValues()
               << "/255\n";
-    if (lit / image->GetNumberOfValues() < 5.0)
-    {
-      ++failures;
-      std::cerr << "FAIL odd light radii must still light the sphere\n";
-    }
+    Check(lit / image->GetNumberOfValues() >= 5.0, "odd light radii must still light the sphere");
   }
-  return failures ? EXIT_FAILURE : EXIT_SUCCESS;
+  return vtkApertureTest::Result();
 }

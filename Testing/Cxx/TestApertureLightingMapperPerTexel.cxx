@@ -14,6 +14,7 @@
 
 #include "vtkApertureLightingMapper.h"
 #include "vtkAperturePrecompute.h"
+#include "vtkApertureTestHarness.h"
 #include "vtkTerrainRGBReader.h"
 
 #include "vtkActor.h"
@@ -34,6 +35,8 @@
 
 #include <cmath>
 #include <iostream>
+
+using vtkApertureTest::Check;
 
 int TestApertureLightingMapperPerTexel(int argc, char* argv[])
 {
@@ -116,7 +119,6 @@ int TestApertureLightingMapperPerTexel(int argc, char* argv[])
   mapper->SetInputConnection(planeCoords->GetOutputPort());
   capture(fromInput);
 
-  int failures = 0;
   for (vtkUnsignedCharArray* texel : { generated.Get(), fromInput.Get() })
   {
     double sum = 0.0, lit = 0.0;
@@ -131,11 +133,8 @@ int TestApertureLightingMapperPerTexel(int argc, char* argv[])
               << lit / perVertex->GetNumberOfValues() << "/255\n";
     // Texture filtering (bilinear over 4 texels) and vertex interpolation (over a triangle's
     // 3 vertices) differ a little inside each cell.
-    if (mean > 0.5 || lit / perVertex->GetNumberOfValues() < 20.0)
-    {
-      ++failures;
-      std::cerr << "FAIL per-texel apertures must render like per-vertex ones\n";
-    }
+    Check(mean <= 0.5 && lit / perVertex->GetNumberOfValues() >= 20.0,
+      "per-texel apertures must render like per-vertex ones");
   }
-  return failures ? EXIT_FAILURE : EXIT_SUCCESS;
+  return vtkApertureTest::Result();
 }

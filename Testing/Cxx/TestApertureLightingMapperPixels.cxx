@@ -14,6 +14,7 @@
 // evaluation of the same shading equation (vtkSphericalCap) within 1/255.
 
 #include "vtkApertureLightingMapper.h"
+#include "vtkApertureTestHarness.h"
 #include "vtkSphericalCap.h"
 
 #include "vtkActor.h"
@@ -40,6 +41,8 @@
 
 namespace
 {
+using vtkApertureTest::Check;
+
 constexpr double Pi = vtkMath::Pi();
 constexpr int Grid = 11; // quads per side
 constexpr int Size = 30; // pixels per quad side
@@ -240,7 +243,6 @@ int TestApertureLightingMapperPixels(int, char*[])
       false, 0.8, environment });
   }
 
-  int failures = 0;
   vtkNew<vtkUnsignedCharArray> pixels;
   for (const Scene& s : scenes)
   {
@@ -299,11 +301,8 @@ int TestApertureLightingMapperPixels(int, char*[])
     // 0.5 for the 8-bit rounding, 0.5 for single precision; the environment sky is looked up in a
     // table of 64 x 32 axes and 16 radii, against exact quadrature on the CPU.
     const double tolerance = s.Environment ? 1.5 : 1.0;
-    if (worst > tolerance)
-    {
-      ++failures;
-      std::cerr << "FAIL pixels differ from the CPU shading by more than " << tolerance << "/255\n";
-    }
+    Check(worst <= tolerance,
+      "pixels differ from the CPU shading by more than the tolerance (/255)", worst, tolerance);
   }
-  return failures ? EXIT_FAILURE : EXIT_SUCCESS;
+  return vtkApertureTest::Result();
 }

@@ -14,6 +14,7 @@
 // closed apertures (r = 0) render dark.
 
 #include "vtkApertureLightingMapper.h"
+#include "vtkApertureTestHarness.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -37,6 +38,8 @@
 
 namespace
 {
+using vtkApertureTest::Check;
+
 vtkSmartPointer<vtkPolyData> Sphere(double radius)
 {
   vtkNew<vtkSphereSource> source;
@@ -117,7 +120,6 @@ int TestApertureLightingMapperStandard(int, char*[])
       } },
   };
 
-  int failures = 0;
   vtkNew<vtkUnsignedCharArray> standard, aperture;
   for (const auto& setup : setups)
   {
@@ -142,11 +144,7 @@ int TestApertureLightingMapperStandard(int, char*[])
         std::cout << setup.first << ", " << mapper->GetApertureLighting()->GetShadingModeAsString()
                   << (lambert ? " (moment)" : "") << ": mean |aperture - standard| = " << mean
                   << "/255\n";
-        if (mean > 2.0)
-        {
-          ++failures;
-          std::cerr << "FAIL open apertures must render as standard lighting\n";
-        }
+        Check(mean <= 2.0, "open apertures must render as standard lighting");
       }
     }
   }
@@ -162,10 +160,6 @@ int TestApertureLightingMapperStandard(int, char*[])
     brightest = std::max(brightest, static_cast<int>(aperture->GetValue(i)));
   }
   std::cout << "closed apertures: brightest value " << brightest << "/255\n";
-  if (brightest > 1)
-  {
-    ++failures;
-    std::cerr << "FAIL closed apertures must render dark\n";
-  }
-  return failures ? EXIT_FAILURE : EXIT_SUCCESS;
+  Check(brightest <= 1, "closed apertures must render dark");
+  return vtkApertureTest::Result();
 }

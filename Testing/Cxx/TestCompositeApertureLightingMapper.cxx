@@ -15,6 +15,7 @@
 
 #include "vtkApertureLightingMapper.h"
 #include "vtkAperturePrecompute.h"
+#include "vtkApertureTestHarness.h"
 #include "vtkCompositeApertureLightingMapper.h"
 
 #include "vtkActor.h"
@@ -39,6 +40,8 @@
 
 namespace
 {
+using vtkApertureTest::Check;
+
 void Light(vtkRenderer* renderer)
 {
   vtkNew<vtkLight> lamp;
@@ -145,18 +148,11 @@ int TestCompositeApertureLightingMapper(int argc, char* argv[])
   const double mean = sum / together->GetNumberOfValues();
   std::cout << "composite vs one mapper per block: mean |difference| " << mean << "/255, max "
             << worst << "/255; warnings: " << observer->GetWarningMessage();
-  int failures = 0;
-  if (mean > 0.1 || worst > 2)
-  {
-    ++failures;
-    std::cerr << "FAIL the composite mapper must shade like one mapper per block\n";
-  }
-  if (!warnedSeparate || !observer->GetWarning() ||
-    observer->GetWarningMessage().find("BentNormal") == std::string::npos)
-  {
-    ++failures;
-    std::cerr << "FAIL the block without apertures must be reported\n";
-  }
+  Check(mean <= 0.1 && worst <= 2, "the composite mapper must shade like one mapper per block");
+  Check(warnedSeparate && observer->GetWarning() &&
+      observer->GetWarningMessage().find("BentNormal") != std::string::npos,
+    "the block without apertures must be reported");
   const int retVal = vtkRegressionTestImage(window);
-  return (!retVal || failures) ? EXIT_FAILURE : EXIT_SUCCESS;
+  Check(retVal != 0, "the image matches its baseline");
+  return vtkApertureTest::Result();
 }

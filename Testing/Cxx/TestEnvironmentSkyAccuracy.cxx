@@ -21,6 +21,7 @@
 #include "vtkApertureRayPacket.h"
 #include "vtkApertureRayScene.h"
 #include "vtkApertureSurface.h"
+#include "vtkApertureTestHarness.h"
 #include "vtkEnvironmentMap.h"
 #include "vtkEnvironmentVisibilityLighting.h"
 #include "vtkOcclusionQueryVisibility.h"
@@ -40,6 +41,8 @@
 #include <limits>
 #include <string>
 #include <vector>
+
+using vtkApertureTest::Check;
 
 int TestEnvironmentSkyAccuracy(int argc, char* argv[])
 {
@@ -224,13 +227,9 @@ int TestEnvironmentSkyAccuracy(int argc, char* argv[])
             << "  aperture environment sky: " << 100 * apertureError << "%\n"
             << "  ambient occlusion x irradiance: " << 100 * shortcutError << "%\n"
             << "  visibility matrix, k = 258: " << 100 * matrixError << "%\n";
-  int failures = 0;
   // Measured: matrix 0.9%, aperture sky 7.3%, ambient occlusion 10.7%.
-  if (!(matrixError < 0.03 && apertureError < 0.12 && apertureError < shortcutError))
-  {
-    std::cerr << "FAIL the visibility matrix must be within 3% and the aperture sky within 12% "
-                 "and closer than ambient occlusion\n";
-    ++failures;
-  }
-  return failures ? EXIT_FAILURE : EXIT_SUCCESS;
+  Check(matrixError < 0.03 && apertureError < 0.12 && apertureError < shortcutError,
+    "the visibility matrix must be within 3% and the aperture sky within 12% and closer than "
+    "ambient occlusion");
+  return vtkApertureTest::Result();
 }

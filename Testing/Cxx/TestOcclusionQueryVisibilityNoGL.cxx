@@ -16,6 +16,7 @@
 //   it needs, OcclusionQuery works where the driver still offers its queries or names them,
 //   RayCast works.
 
+#include "vtkApertureTestHarness.h"
 #include "vtkOcclusionQueryVisibility.h"
 
 #include "vtkCommand.h"
@@ -31,6 +32,8 @@
 
 namespace
 {
+using vtkApertureTest::Check;
+
 // Runs a backend; returns its error message, empty on success.
 std::string Run(vtkPolyData* input, int backend)
 {
@@ -70,24 +73,26 @@ int TestOcclusionQueryVisibilityNoGL(int argc, char* argv[])
             << "  DepthCompare: " << (depth.empty() ? "works\n" : depth)
             << "  RayCast: " << (rays.empty() ? "works\n" : rays);
 
-  bool ok = rays.empty();
+  const std::string inMode = "mode " + mode + ": ";
+  Check(rays.empty(), inMode + "RayCast must work");
   if (mode == "no-display")
   {
-    ok = ok && query.find("No OpenGL context") != std::string::npos &&
-      depth.find("No OpenGL context") != std::string::npos;
+    Check(query.find("No OpenGL context") != std::string::npos,
+      inMode + "OcclusionQuery must fail saying there is no OpenGL context");
+    Check(depth.find("No OpenGL context") != std::string::npos,
+      inMode + "DepthCompare must fail saying there is no OpenGL context");
   }
   else if (mode == "old-gl")
   {
-    ok = ok && depth.find("OpenGL 4.3") != std::string::npos &&
-      (query.empty() || query.find("OpenGL 3.3") != std::string::npos);
+    Check(depth.find("OpenGL 4.3") != std::string::npos,
+      inMode + "DepthCompare must fail naming the OpenGL 4.3 it needs");
+    Check(query.empty() || query.find("OpenGL 3.3") != std::string::npos,
+      inMode + "OcclusionQuery must work or fail naming OpenGL 3.3");
   }
   else
   {
-    ok = ok && query.empty() && depth.empty();
+    Check(query.empty(), inMode + "OcclusionQuery must work");
+    Check(depth.empty(), inMode + "DepthCompare must work");
   }
-  if (!ok)
-  {
-    std::cerr << "FAIL the backends did not behave as expected in mode " << mode << "\n";
-  }
-  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+  return vtkApertureTest::Result();
 }

@@ -12,6 +12,7 @@
 // texel per input) over a grid of inputs, random shading configurations and bad inputs, and
 // compares with the C++ values.
 
+#include "vtkApertureTestHarness.h"
 #include "vtkSphericalCap.h"
 #include "vtkSphericalCapGLSL.h"
 
@@ -31,12 +32,14 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
 namespace
 {
 constexpr double Pi = vtkMath::Pi();
+using vtkApertureTest::Check;
 
 // Cap functions read (R1, R2, D, A1, A2); shading functions read normal A1, aperture (A2, R1) and
 // light (A3, R2).
@@ -45,6 +48,18 @@ struct Case
   float R1, R2, D;
   float A1[3], A2[3], A3[3];
 };
+
+// The harness's Check with the case's radii and distance and both values in its message.
+void Check(bool ok, const char* what, const Case& c, double got, double want)
+{
+  if (!ok)
+  {
+    std::ostringstream message;
+    message << what << " r1=" << c.R1 << " r2=" << c.R2 << " d=" << c.D << ": GLSL " << got
+            << ", C++ " << want;
+    vtkApertureTest::Check(ok, message.str());
+  }
+}
 
 // Each pass writes one vec4 per input texel.
 const char* EvaluatorFS = R"(//VTK::System::Dec
@@ -336,7 +351,6 @@ int TestSphericalCapGLSL(int, char*[])
     { 2e-3, 2e-3, 2e-3, 1e-4 }, { 1e-3, 1e-3, 1e-3, 1e-3 }, { 1e-3, 1e-4, 1e-4, 1e-4 },
     { 1e-4, 1e-4, 1e-4, 1e-4 } };
 
-  int failures = 0;
   std::vector<float> result(4 * width * height);
   for (int pass = 0; pass < 6; ++pass)
   {
@@ -380,14 +394,7 @@ int TestSphericalCapGLSL(int, char*[])
         {
           tol = 2.0; // Direction not defined to float precision; only finiteness is checked.
         }
-        if (!std::isfinite(got) || !(err <= tol))
-        {
-          if (++failures < 20)
-          {
-            std::cerr << "FAIL " << names[pass][k] << " r1=" << c.R1 << " r2=" << c.R2
-                      << " d=" << c.D << ": GLSL " << got << ", C++ " << want[k] << "\n";
-          }
-        }
+        Check(std::isfinite(got) && err <= tol, names[pass][k], c, got, want[k]);
         if (std::isfinite(got) && tol < 2.0)
         {
           worst[k] = std::max(worst[k], err);
@@ -411,14 +418,11 @@ int TestSphericalCapGLSL(int, char*[])
     {
       std::cout << "IntersectionArea: max |GLSL - C++| relative to the smaller cap = "
                 << worstRelativeArea << "\n";
-      if (worstRelativeArea > 1e-3)
-      {
-        std::cerr << "FAIL single-precision area loses its relative accuracy for small caps\n";
-        ++failures;
-      }
+      Check(worstRelativeArea <= 1e-3,
+        "single-precision area loses its relative accuracy for small caps");
     }
   }
   state->PopFramebufferBindings();
   std::cout << cases.size() << " inputs evaluated on " << glGetString(GL_RENDERER) << "\n";
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return vtkApertureTest::Result();
 }
