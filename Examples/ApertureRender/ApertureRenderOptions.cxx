@@ -401,7 +401,8 @@ vtkApertureLightingMapper under suns, sphere lights and a sky.
 
 INPUT (optional; without it, the embedded Mount Fuji tile: 512 x 512 samples 60 m apart,
 heights x 1.5):
-  meshes           .obj .ply .stl .vtp .vtk (VTK legacy)
+  meshes           .obj .ply .stl .vtp, and .vtk (VTK legacy: trusted files only, as VTK 9.1's
+                   legacy reader can crash on a damaged one)
   height fields    .png: Terrain-RGB (height = -10000 + (R*65536 + G*256 + B) * 0.1 m) when it has
                    colour, else 8- or 16-bit grey heights; .tif/.tiff (GeoTIFF or grey),
                    .asc (ESRI ASCII grid), .img (ERDAS), .vrt (GDAL virtual raster): single-band
