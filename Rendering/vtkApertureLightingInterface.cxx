@@ -356,12 +356,40 @@ bool vtkApertureLightingInterface::CheckApertures(vtkDataSet* data, std::string&
   this->CheckedArrays[1] = radius;
   this->CheckedTime = time;
   this->CheckedResult = problem.empty();
+  this->Report(problem);
+  return this->CheckedResult;
+}
+
+//------------------------------------------------------------------------------
+bool vtkApertureLightingInterface::CheckApertureImage(vtkRenderer* renderer)
+{
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  const int largest = window ? vtkTextureObject::GetMaximumTextureSize(window) : -1;
+  int dims[3] = { 0, 0, 0 };
+  if (this->ApertureImage)
+  {
+    this->ApertureImage->GetDimensions(dims);
+  }
+  if (largest > 0 && std::max(dims[0], dims[1]) > largest)
+  {
+    std::ostringstream problem;
+    problem << "the aperture grid of " << dims[0] << " x " << dims[1]
+            << " texels is larger than this OpenGL's textures (" << largest
+            << " a side); resample it (vtkImageResize) first";
+    this->Report(problem.str());
+    return false;
+  }
+  return this->CheckApertures(this->ApertureImage);
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingInterface::Report(const std::string& problem)
+{
   if (!problem.empty() && problem != this->LastProblem)
   {
     vtkWarningMacro("Cannot shade with apertures: " << problem << "; using standard shading.");
   }
   this->LastProblem = problem;
-  return this->CheckedResult;
 }
 
 //------------------------------------------------------------------------------
@@ -565,17 +593,9 @@ bool vtkApertureLightingInterface::UploadTexture(vtkRenderer* renderer)
   {
     return true;
   }
+  // CheckApertureImage() made sure that the grid fits in a texture.
   int dims[3];
   this->ApertureImage->GetDimensions(dims);
-  const int largest = vtkTextureObject::GetMaximumTextureSize(window);
-  if (std::max(dims[0], dims[1]) > largest)
-  {
-    vtkErrorMacro("The aperture grid of "
-      << dims[0] << " x " << dims[1] << " texels is larger than this OpenGL's textures (" << largest
-      << " a side); resample it (vtkImageResize) first.");
-    this->Texture = nullptr;
-    return false;
-  }
   vtkPointData* pd = this->ApertureImage->GetPointData();
   vtkDataArray* bent = pd->GetArray(this->BentNormalArrayName.c_str());
   vtkDataArray* radius = pd->GetArray(this->ApertureRadiusArrayName.c_str());
@@ -598,7 +618,11 @@ bool vtkApertureLightingInterface::UploadTexture(vtkRenderer* renderer)
   this->Texture->SetWrapT(vtkTextureObject::ClampToEdge);
   this->Texture->SetMinificationFilter(vtkTextureObject::Linear);
   this->Texture->SetMagnificationFilter(vtkTextureObject::Linear);
-  this->Texture->Create2DFromRaw(dims[0], dims[1], 4, VTK_FLOAT, texels.data());
+  if (!this->Texture->Create2DFromRaw(dims[0], dims[1], 4, VTK_FLOAT, texels.data()))
+  {
+    this->Texture = nullptr;
+    return false;
+  }
   this->TextureTime.Modified();
   return true;
 }

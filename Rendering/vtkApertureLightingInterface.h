@@ -208,6 +208,12 @@ public:
   ///@}
 
   /**
+   * For the mappers in per-texel mode: CheckApertures() on the aperture image, which must also fit
+   * in the textures of the renderer's OpenGL (its context current); warns once otherwise.
+   */
+  bool CheckApertureImage(vtkRenderer* renderer);
+
+  /**
    * For the mappers: writes the aperture lighting code into the shaders, or returns false where
    * standard shading applies (STANDARD, lighting off, PBR, the lighting-map pass keys).
    * perTexel selects texture lookups; inputTCoords whether their coordinates come from the
@@ -269,8 +275,10 @@ private:
   void SetLightParameters(vtkShaderProgram* program, vtkRenderer* renderer);
   void SetTextureParameters(vtkShaderProgram* program, vtkRenderer* renderer, bool inputTCoords,
     const double shift[3], const double scale[3]);
-  // False, after an error, when the grid is larger than the context's textures.
+  // Uploads the aperture image as a texture when it changed; false when OpenGL cannot make it.
   bool UploadTexture(vtkRenderer* renderer);
+  // Warns about a new problem (none when empty) once, and remembers it.
+  void Report(const std::string& problem);
   // Builds the environment sky's table and uploads it as a 3D texture, when the environment's
   // image or blur changed.
   void UploadSkyTable(vtkRenderer* renderer);

@@ -85,7 +85,8 @@ void vtkApertureLightingMapper::RenderPiece(vtkRenderer* renderer, vtkActor* act
     vtkDataArray* tcoords = input->GetPointData()->GetTCoords();
     const bool inputTCoords =
       image && tcoords && tcoords->GetNumberOfComponents() == 2 && tcoords->GetName();
-    if (this->Lighting->CheckApertures(image ? static_cast<vtkDataSet*>(image) : input))
+    if (image ? this->Lighting->CheckApertureImage(renderer)
+              : this->Lighting->CheckApertures(input))
     {
       state = Apertures | (image ? PerTexel : 0) | (inputTCoords ? InputTCoords : 0);
     }

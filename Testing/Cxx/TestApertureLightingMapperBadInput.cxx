@@ -21,12 +21,14 @@
 #include "vtkLight.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
+#include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSphereSource.h"
 #include "vtkTestErrorObserver.h"
+#include "vtkTextureObject.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <cmath>
@@ -59,6 +61,28 @@ vtkSmartPointer<vtkPolyData> Sphere(const std::function<void(vtkPolyData*)>& spo
   sphere->GetPointData()->AddArray(radius);
   spoil(sphere);
   return sphere;
+}
+
+// A per-texel aperture grid of nx x ny texels, all open to the sky above.
+vtkSmartPointer<vtkImageData> ApertureGrid(int nx, int ny)
+{
+  auto grid = vtkSmartPointer<vtkImageData>::New();
+  grid->SetDimensions(nx, ny, 1);
+  vtkNew<vtkFloatArray> bent;
+  bent->SetName("BentNormal");
+  bent->SetNumberOfComponents(3);
+  bent->SetNumberOfTuples(grid->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
+  {
+    bent->SetTuple3(i, 0.0, 0.0, 1.0);
+  }
+  vtkNew<vtkFloatArray> radius;
+  radius->SetName("ApertureRadius");
+  radius->SetNumberOfTuples(grid->GetNumberOfPoints());
+  radius->Fill(1.5);
+  grid->GetPointData()->AddArray(bent);
+  grid->GetPointData()->AddArray(radius);
+  return grid;
 }
 }
 
@@ -157,6 +181,17 @@ int TestApertureLightingMapperBadInput(int, char*[])
   mapper->SetInputData(Sphere([](vtkPolyData*) {}));
   mapper->SetApertureImage(empty);
   judge("aperture image without arrays", "no point-data array named 'BentNormal'");
+
+  // An aperture grid wider than the context's textures: one warning, however many frames.
+  const int largest =
+    vtkTextureObject::GetMaximumTextureSize(vtkOpenGLRenderWindow::SafeDownCast(window));
+  mapper->SetApertureImage(ApertureGrid(largest + 1, 2));
+  judge("aperture grid wider than the textures", "larger than this OpenGL's textures");
+  window->Render();
+  Check(!observer->GetWarning(), "a grid too wide for the textures must warn only once");
+  mapper->SetApertureImage(ApertureGrid(16, 2));
+  capture(image);
+  Check(!observer->GetWarning(), "a grid that fits must shade without a warning");
   mapper->SetApertureImage(nullptr);
 
   // The same problem twice warns once.
