@@ -52,6 +52,14 @@ void MetresPerDegree(double semiMajor, double inverseFlattening, double phi, dou
   metres[1] = DegreesToRadians * semiMajor * (1.0 - e2) / (w * std::sqrt(w));
 }
 
+// Degrees in one unit of a geographic CRS's angles: 1, or 0.9 for grads (NTF Paris, the base of
+// France's Lambert zones).
+double DegreesPerAngularUnit(OGRSpatialReferenceH geographic)
+{
+  const double radians = OSRGetAngularUnits(geographic, nullptr);
+  return radians > 0.0 ? radians / DegreesToRadians : 1.0;
+}
+
 // The ground distance, in metres, of one pixel along each axis at the tile's centre, for a
 // projected CRS with a geographic base; false where it cannot be found.
 bool GroundSpacing(
@@ -79,12 +87,14 @@ bool GroundSpacing(
   if (ok)
   {
     OGRErr err = OGRERR_NONE;
+    const double degrees = DegreesPerAngularUnit(geographic);
     double metres[2];
-    MetresPerDegree(
-      OSRGetSemiMajor(geographic, &err), OSRGetInvFlattening(geographic, &err), y[0], metres);
+    MetresPerDegree(OSRGetSemiMajor(geographic, &err), OSRGetInvFlattening(geographic, &err),
+      degrees * y[0], metres);
     for (int a = 0; a < 2; ++a)
     {
-      const double east = (x[a + 1] - x[0]) * metres[0], north = (y[a + 1] - y[0]) * metres[1];
+      const double east = degrees * (x[a + 1] - x[0]) * metres[0];
+      const double north = degrees * (y[a + 1] - y[0]) * metres[1];
       ground[a] = std::sqrt(east * east + north * north);
     }
   }
@@ -111,6 +121,82 @@ vtkNew<vtkStringArray> Text(const char* name, const std::string& value)
   array->SetName(name);
   array->InsertNextValue(value);
   return array;
+}
+
+// The grid's spacing and origin in ground metres, how they were found, and what to say about it
+// (sentences that follow the file's name).
+struct Ground
+{
+  double Spacing[2] = { 1.0, 1.0 };
+  double Origin[2] = { 0.0, 0.0 };
+  std::string Note, Warning, Error;
+};
+
+// A geographic CRS: metres at the tile's central latitude on the CRS's ellipsoid, from the
+// geotransform in the CRS's angular units.
+Ground GeographicGround(
+  OGRSpatialReferenceH srs, const double gt[6], const int size[2], const double geoSpacing[2])
+{
+  Ground ground;
+  const double degrees = DegreesPerAngularUnit(srs);
+  const double north = degrees * std::max(gt[3], gt[3] + size[1] * gt[5]);
+  const double south = degrees * std::min(gt[3], gt[3] + size[1] * gt[5]);
+  const double centre = 0.5 * (north + south);
+  OGRErr err = OGRERR_NONE;
+  const double a = OSRGetSemiMajor(srs, &err), inverseFlattening = OSRGetInvFlattening(srs, &err);
+  double metres[2], edge[2];
+  MetresPerDegree(a, inverseFlattening, centre, metres);
+  MetresPerDegree(a, inverseFlattening, std::abs(north) > std::abs(south) ? north : south, edge);
+  for (int k = 0; k < 2; ++k)
+  {
+    ground.Spacing[k] = geoSpacing[k] * degrees * metres[k];
+  }
+  std::ostringstream text;
+  text << "metres at the tile's central latitude " << centre << " degrees (geographic CRS)";
+  ground.Note = text.str();
+  if (!(std::max(std::abs(north), std::abs(south)) < 90.0 - 1e-9))
+  {
+    ground.Error =
+      "reaches a pole, where degrees of longitude have no length; reproject it (gdalwarp)";
+  }
+  else if (edge[0] < 0.99 * metres[0])
+  {
+    text.str("");
+    text << "spans latitudes " << south << " to " << north
+         << " degrees: its east-west spacing varies by " << 100.0 * (1.0 - edge[0] / metres[0])
+         << "% across it; reproject it for exact slopes.";
+    ground.Warning = text.str();
+  }
+  return ground;
+}
+
+// A projected CRS (or none): its linear unit in metres, unless the ground distance at the tile's
+// centre differs by more than 1% (Web Mercator's "metres" are sec(latitude) ground metres, and
+// slopes need the ground's).
+Ground ProjectedGround(OGRSpatialReferenceH srs, const double gt[6], const int size[2],
+  const double geoSpacing[2], const double geoOrigin[2])
+{
+  Ground ground;
+  const double unit = srs ? OSRGetLinearUnits(srs, nullptr) : 1.0;
+  for (int k = 0; k < 2; ++k)
+  {
+    ground.Spacing[k] = geoSpacing[k] * unit;
+    ground.Origin[k] = geoOrigin[k] * unit;
+  }
+  ground.Note = srs ? "metres from the projected CRS's pixel size"
+                    : "pixel size of the file's geotransform (no CRS: taken as metres)";
+  double metres[2];
+  if (srs && GroundSpacing(srs, gt, size, metres) &&
+    (std::abs(metres[0] / ground.Spacing[0] - 1.0) > 0.01 ||
+      std::abs(metres[1] / ground.Spacing[1] - 1.0) > 0.01))
+  {
+    std::ostringstream text;
+    text << "ground metres at the tile's centre; the projected CRS's units are "
+         << ground.Spacing[0] / metres[0] << " of them there";
+    ground.Note = text.str();
+    std::copy(metres, metres + 2, ground.Spacing);
+  }
+  return ground;
 }
 }
 
@@ -244,77 +330,40 @@ bool vtkGDALDEMReader::FindGroundSpacing(const double gt[6], std::string& error)
     ? nullptr
     : OSRNewSpatialReference(this->SpatialReference.c_str());
   this->Geographic = srs && OSRIsGeographic(srs);
-  std::ostringstream note;
+  Ground ground;
   if (!this->Georeferenced)
   {
-    this->Spacing[0] = this->Spacing[1] = 1.0;
-    this->Origin[0] = this->Origin[1] = 0.0;
-    note << "no georeferencing: spacing 1";
+    ground.Note = "no georeferencing: spacing 1";
     vtkWarningMacro("\"" << this->FileName << "\" is not georeferenced: spacing 1.");
   }
   else if (this->Geographic)
   {
-    const double north = std::max(gt[3], gt[3] + this->Size[1] * gt[5]);
-    const double south = std::min(gt[3], gt[3] + this->Size[1] * gt[5]);
-    const double centre = 0.5 * (north + south);
-    OGRErr err = OGRERR_NONE;
-    const double a = OSRGetSemiMajor(srs, &err), inverseFlattening = OSRGetInvFlattening(srs, &err);
-    double metres[2], edge[2];
-    MetresPerDegree(a, inverseFlattening, centre, metres);
-    MetresPerDegree(a, inverseFlattening, std::abs(north) > std::abs(south) ? north : south, edge);
-    this->Spacing[0] = this->GeoSpacing[0] * metres[0];
-    this->Spacing[1] = this->GeoSpacing[1] * metres[1];
-    this->Origin[0] = this->Origin[1] = 0.0;
-    note << "metres at the tile's central latitude " << centre << " degrees (geographic CRS)";
-    if (!(std::max(std::abs(north), std::abs(south)) < 90.0 - 1e-9))
-    {
-      error = "\"" + this->FileName +
-        "\" reaches a pole, where degrees of longitude have no length; reproject it (gdalwarp)";
-    }
-    else if (edge[0] < 0.99 * metres[0])
-    {
-      vtkWarningMacro("\"" << this->FileName << "\" spans latitudes " << south << " to " << north
-                           << " degrees: its east-west spacing varies by "
-                           << 100.0 * (1.0 - edge[0] / metres[0])
-                           << "% across it; reproject it for exact slopes.");
-    }
+    ground = GeographicGround(srs, gt, this->Size, this->GeoSpacing);
   }
   else
   {
-    const double unit = srs ? OSRGetLinearUnits(srs, nullptr) : 1.0;
-    for (int a = 0; a < 2; ++a)
-    {
-      this->Spacing[a] = this->GeoSpacing[a] * unit;
-      this->Origin[a] = this->GeoOrigin[a] * unit;
-    }
-    double ground[2];
-    const bool scaled = srs && GroundSpacing(srs, gt, this->Size, ground) &&
-      (std::abs(ground[0] / this->Spacing[0] - 1.0) > 0.01 ||
-        std::abs(ground[1] / this->Spacing[1] - 1.0) > 0.01);
-    note << (srs ? "metres from the projected CRS's pixel size"
-                 : "pixel size of the file's geotransform (no CRS: taken as metres)");
-    if (scaled)
-    {
-      // Web Mercator's "metres" are sec(latitude) ground metres: slopes need the ground's.
-      note.str("");
-      note << "ground metres at the tile's centre; the projected CRS's units are "
-           << this->Spacing[0] / ground[0] << " of them there";
-      std::copy(ground, ground + 2, this->Spacing);
-    }
+    ground = ProjectedGround(srs, gt, this->Size, this->GeoSpacing, this->GeoOrigin);
   }
   if (srs)
   {
     OSRDestroySpatialReference(srs);
   }
-  for (const double s : this->Spacing)
+  std::copy(ground.Spacing, ground.Spacing + 2, this->Spacing);
+  std::copy(ground.Origin, ground.Origin + 2, this->Origin);
+  this->GroundSpacingNote = ground.Note;
+  if (!ground.Warning.empty())
   {
-    if (error.empty() && !(s >= 1e-3 && s <= 1e6))
+    vtkWarningMacro("\"" << this->FileName << "\" " << ground.Warning);
+  }
+  error = ground.Error.empty() ? std::string() : "\"" + this->FileName + "\" " + ground.Error;
+  for (const double spacing : this->Spacing)
+  {
+    if (error.empty() && !(spacing >= 1e-3 && spacing <= 1e6))
     {
-      error = "\"" + this->FileName + "\" has a ground spacing of " + std::to_string(s) +
+      error = "\"" + this->FileName + "\" has a ground spacing of " + std::to_string(spacing) +
         " m, outside [1 mm, 1000 km]";
     }
   }
-  this->GroundSpacingNote = note.str();
   return error.empty();
 }
 

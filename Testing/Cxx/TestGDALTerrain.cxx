@@ -237,6 +237,35 @@ void TestGeographic()
   Check(std::string(reader->GetGroundSpacingNote()).find("latitude 35") != std::string::npos,
     "geographic: the note names the latitude");
 
+  // One tile on the NTF datum in degrees (EPSG:4275) and in grads from Paris (EPSG:4807, 400 to
+  // the turn): the same ground spacing.
+  double degreeSpacing[2];
+  for (const int epsg : { 4275, 4807 })
+  {
+    const double perDegree = epsg == 4807 ? 400.0 / 360.0 : 1.0;
+    const double fromParis = epsg == 4807 ? 2.33722917 : 0.0; // Paris, degrees east of Greenwich
+    const double tile[6] = { perDegree * (2.5 - fromParis), perDegree * second, 0.0,
+      perDegree * 48.8, 0.0, -perDegree * second };
+    std::copy(tile, tile + 6, spec.GeoTransform);
+    spec.EPSG = epsg;
+    reader->SetFileName(WriteDEM("ntf-" + std::to_string(epsg) + ".tif", spec).c_str());
+    reader->Update();
+    const double* ntf = reader->GetOutput()->GetSpacing();
+    if (epsg == 4275)
+    {
+      std::copy(ntf, ntf + 2, degreeSpacing);
+      continue;
+    }
+    for (int a = 0; a < 2; ++a)
+    {
+      Check(std::abs(ntf[a] / degreeSpacing[a] - 1.0) < 1e-9,
+        "grads: the metres of degrees along axis " + std::to_string(a), ntf[a], degreeSpacing[a]);
+    }
+    Check(std::string(reader->GetGroundSpacingNote()).find("latitude 48.7") != std::string::npos,
+      "grads: the note gives the latitude in degrees");
+  }
+  spec.EPSG = 4326;
+
   // A tile that reaches the north pole.
   const double polar[6] = { 0.0, 1.0, 0.0, 90.0, 0.0, -1.0 };
   std::copy(polar, polar + 6, spec.GeoTransform);
@@ -266,6 +295,28 @@ void TestWebMercator()
   }
   Check(std::string(reader->GetGroundSpacingNote()).find("ground metres") != std::string::npos,
     "Web Mercator: the note says the CRS's units are not ground metres");
+}
+
+// France's Lambert II extended (EPSG:27572) counts true metres (scale within 0.1% near Paris) on a
+// geographic base in grads: its spacing stays the pixel size.
+void TestLambertOnGrads()
+{
+  FileSpec spec;
+  spec.EPSG = 27572;
+  const double gt[6] = { 600000.0, 30.0, 0.0, 2430000.0, 0.0, -30.0 };
+  std::copy(gt, gt + 6, spec.GeoTransform);
+  vtkNew<vtkGDALDEMReader> reader;
+  reader->SetFileName(WriteDEM("lambert2e.tif", spec).c_str());
+  reader->Update();
+  for (int a = 0; a < 2; ++a)
+  {
+    const double got = reader->GetOutput()->GetSpacing()[a];
+    Check(std::abs(got / 30.0 - 1.0) < 2e-3,
+      "Lambert II extended: metres along axis " + std::to_string(a), got, 30.0);
+  }
+  Check(std::string(reader->GetGroundSpacingNote()).find("projected CRS's pixel size") !=
+      std::string::npos,
+    "Lambert II extended: the note says the CRS's metres are used");
 }
 
 void TestBadFiles()
@@ -506,6 +557,7 @@ int TestGDALTerrain(int argc, char* argv[])
   TestTypesScaleAndVerticalScale();
   TestGeographic();
   TestWebMercator();
+  TestLambertOnGrads();
   TestBadFiles();
   TestTiledRoundTrip();
   TestDegenerate();
