@@ -77,12 +77,10 @@ bool vtkVisibilityCameraPass::Visible(const float matrix[16], int width, int hei
 bool vtkVisibilityCameraPass::Prepare(int width, int height,
   const std::vector<std::uint32_t>& candidates, bool queries, std::string& error)
 {
-  if (!this->Scene.HasScene())
+  if (!this->Scene.MakeCurrent(error))
   {
-    error = "no scene";
     return false;
   }
-  this->Scene.GetWindow()->MakeCurrent();
   if ((!queries &&
         !this->Scene.ReadyProgram(this->Program, this->VAO,
           vtkVisibilityScene::PointsVS430().c_str(), vtkVisibilityCameraFS, "camera-view",

@@ -118,18 +118,6 @@ vtkVisibilityMatrixPasses::~vtkVisibilityMatrixPasses()
 }
 
 //------------------------------------------------------------------------------
-bool vtkVisibilityMatrixPasses::Current(std::string& error)
-{
-  if (!this->Scene.HasScene())
-  {
-    error = "no scene";
-    return false;
-  }
-  this->Scene.GetWindow()->MakeCurrent();
-  return true;
-}
-
-//------------------------------------------------------------------------------
 bool vtkVisibilityMatrixPasses::SetReceivers(
   vtkIdType receivers, double radius, int resolution, std::string& error)
 {
@@ -137,7 +125,7 @@ bool vtkVisibilityMatrixPasses::SetReceivers(
   this->Radius = radius;
   this->Resolution = resolution;
   this->DepthPasses = 0;
-  return this->Current(error) &&
+  return this->Scene.MakeCurrent(error) &&
     this->Scene.DepthTarget(
       this->Depth, this->Framebuffer, resolution, resolution, "light-view", error);
 }
@@ -146,7 +134,7 @@ bool vtkVisibilityMatrixPasses::SetReceivers(
 bool vtkVisibilityMatrixPasses::OcclusionQuery(const std::vector<std::array<double, 3>>& directions,
   std::vector<Bits>& visible, std::string& error, const std::vector<std::uint32_t>* subset)
 {
-  if (!this->Current(error))
+  if (!this->Scene.MakeCurrent(error))
   {
     return false;
   }
@@ -190,7 +178,7 @@ bool vtkVisibilityMatrixPasses::DepthCompare(const std::vector<std::array<double
   std::vector<Bits>& visible, std::string& error, const std::function<bool(size_t)>& progress,
   const std::vector<std::uint32_t>* subset)
 {
-  if (!this->Current(error))
+  if (!this->Scene.MakeCurrent(error))
   {
     return false;
   }

@@ -91,8 +91,6 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
-  // False, with `error`, without a scene; makes the scene's context current otherwise.
-  bool Current(std::string& error);
   // Shaders, textures and framebuffer of DepthCompare's paired depth pass.
   bool PreparePairs(std::string& error);
   // DepthCompare's steps: the storage buffer (`words` per slot) and the subset's indices; a

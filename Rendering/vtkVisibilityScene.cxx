@@ -94,6 +94,18 @@ bool vtkVisibilityScene::Set(vtkOpenGLRenderWindow* window, const std::vector<fl
 }
 
 //------------------------------------------------------------------------------
+bool vtkVisibilityScene::MakeCurrent(std::string& error)
+{
+  if (!this->Ready)
+  {
+    error = "no scene";
+    return false;
+  }
+  this->Window->MakeCurrent();
+  return true;
+}
+
+//------------------------------------------------------------------------------
 bool vtkVisibilityScene::Upload(
   const std::vector<float>& points, const std::vector<std::uint32_t>& triangles, std::string& error)
 {

@@ -73,10 +73,14 @@ public:
     const std::vector<std::uint32_t>& triangles, float factor, float units, std::string& error);
 
   /**
-   * The window the scene was last set in (nullptr once released), and whether that succeeded.
+   * The window the scene was last set in (nullptr once released).
    */
   vtkOpenGLRenderWindow* GetWindow() const { return this->Window; }
-  bool HasScene() const { return this->Ready; }
+
+  /**
+   * For the passes: makes the scene's context current; false, with `error`, without a scene.
+   */
+  bool MakeCurrent(std::string& error);
 
   /**
    * The polygon offset of its depth.
