@@ -17,6 +17,7 @@
 #include "vtkApertureRayScene.h"
 #include "vtkApertureRefinement.h"
 #include "vtkApertureSurface.h"
+#include "vtkApertureText.h"
 #include "vtkHorizonHeightField.h"
 #include "vtkMortonOrder.h"
 #include "vtkSphericalCap.h"
@@ -308,11 +309,11 @@ bool vtkAperturePrecompute::vtkRun::CheckReceivers()
         r->Heights->GetNumberOfTuples() != image->GetNumberOfPoints())
       {
         vtkErrorWithObjectMacro(this->Self,
-          "Height field scalars '"
-            << (r->Heights->GetName() ? r->Heights->GetName() : "")
-            << "' must have one component and one value per point; they have "
-            << r->Heights->GetNumberOfComponents() << " component(s) and "
-            << r->Heights->GetNumberOfTuples() << " tuples.");
+          "Height field scalars " << vtkApertureText::Quote(
+                                       r->Heights->GetName() ? r->Heights->GetName() : "")
+                                  << " must have one component and one value per point; they have "
+                                  << r->Heights->GetNumberOfComponents() << " component(s) and "
+                                  << r->Heights->GetNumberOfTuples() << " tuples.");
         return false;
       }
       surfaceCells += image->GetNumberOfCells();

@@ -12,6 +12,7 @@
 
 #include "vtkApertureRayRisks.h"
 #include "vtkApertureSurface.h"
+#include "vtkApertureText.h"
 
 #include <atomic>
 
@@ -150,8 +151,8 @@ bool vtkApertureRayScene::Build(const std::vector<const vtkApertureSurface*>& re
   {
     // The callback cannot be installed before the device exists.
     std::lock_guard<std::mutex> lock(this->ErrorMutex);
-    this->Error = "could not create a device with the configuration \"" + configuration + "\" (" +
-      ErrorName(rtcGetDeviceError(nullptr)) + ")";
+    this->Error = "could not create a device with the configuration " +
+      vtkApertureText::Quote(configuration) + " (" + ErrorName(rtcGetDeviceError(nullptr)) + ")";
     return false;
   }
   rtcSetDeviceErrorFunction(this->Device, &vtkApertureRayScene::ReportError, this);

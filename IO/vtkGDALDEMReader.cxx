@@ -10,6 +10,7 @@
 =========================================================================*/
 #include "vtkGDALDEMReader.h"
 
+#include "vtkApertureText.h"
 #include "vtkGDALSession.h"
 #include "vtkHorizonHeightField.h"
 
@@ -211,19 +212,21 @@ public:
       GDALOpenEx(name.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr);
     if (!this->Dataset)
     {
-      error = "cannot open \"" + name + "\" as a raster: " + this->Session.LastError();
+      error = "cannot open " + vtkApertureText::QuoteName(name) +
+        " as a raster: " + this->Session.LastError();
       return;
     }
     const int bands = GDALGetRasterCount(this->Dataset);
     if (bands != 1)
     {
-      error = "\"" + name + "\" has " + std::to_string(bands) + " bands; a DEM has one";
+      error = vtkApertureText::QuoteName(name) + " has " + std::to_string(bands) +
+        " bands; a DEM has one";
       return;
     }
     this->Band = GDALGetRasterBand(this->Dataset, 1);
     if (GDALDataTypeIsComplex(GDALGetRasterDataType(this->Band)))
     {
-      error = "\"" + name + "\" holds complex numbers, not heights";
+      error = vtkApertureText::QuoteName(name) + " holds complex numbers, not heights";
       this->Band = nullptr;
     }
   }
@@ -277,7 +280,7 @@ int vtkGDALDEMReader::RequestInformation(
   this->Size[1] = GDALGetRasterYSize(raster.Dataset);
   if (this->Size[0] < 1 || this->Size[1] < 1)
   {
-    vtkErrorMacro("\"" << this->FileName << "\" has no texels.");
+    vtkErrorMacro(<< vtkApertureText::QuoteName(this->FileName) << " has no texels.");
     return 0;
   }
 
@@ -293,9 +296,9 @@ int vtkGDALDEMReader::RequestInformation(
   this->NorthUp = gt[5] < 0.0;
   if (gt[2] != 0.0 || gt[4] != 0.0 || !(gt[1] > 0.0) || gt[5] == 0.0)
   {
-    vtkErrorMacro("\"" << this->FileName
-                       << "\" has a rotated, sheared or mirrored geotransform; warp it north-up "
-                          "first (gdalwarp).");
+    vtkErrorMacro(<< vtkApertureText::QuoteName(this->FileName)
+                  << " has a rotated, sheared or mirrored geotransform; warp it north-up "
+                     "first (gdalwarp).");
     return 0;
   }
   const double nx = this->Size[0], ny = this->Size[1];
@@ -334,7 +337,8 @@ bool vtkGDALDEMReader::FindGroundSpacing(const double gt[6], std::string& error)
   if (!this->Georeferenced)
   {
     ground.Note = "no georeferencing: spacing 1";
-    vtkWarningMacro("\"" << this->FileName << "\" is not georeferenced: spacing 1.");
+    vtkWarningMacro(<< vtkApertureText::QuoteName(this->FileName)
+                    << " is not georeferenced: spacing 1.");
   }
   else if (this->Geographic)
   {
@@ -353,15 +357,16 @@ bool vtkGDALDEMReader::FindGroundSpacing(const double gt[6], std::string& error)
   this->GroundSpacingNote = ground.Note;
   if (!ground.Warning.empty())
   {
-    vtkWarningMacro("\"" << this->FileName << "\" " << ground.Warning);
+    vtkWarningMacro(<< vtkApertureText::QuoteName(this->FileName) << " " << ground.Warning);
   }
-  error = ground.Error.empty() ? std::string() : "\"" + this->FileName + "\" " + ground.Error;
+  error = ground.Error.empty() ? std::string()
+                               : vtkApertureText::QuoteName(this->FileName) + " " + ground.Error;
   for (const double spacing : this->Spacing)
   {
     if (error.empty() && !(spacing >= 1e-3 && spacing <= 1e6))
     {
-      error = "\"" + this->FileName + "\" has a ground spacing of " + std::to_string(spacing) +
-        " m, outside [1 mm, 1000 km]";
+      error = vtkApertureText::QuoteName(this->FileName) + " has a ground spacing of " +
+        std::to_string(spacing) + " m, outside [1 mm, 1000 km]";
     }
   }
   return error.empty();
@@ -433,7 +438,8 @@ bool vtkGDALDEMReader::ReadRows(vtkRaster& raster, const int extent[6], float* h
     if (GDALRasterIO(raster.Band, GF_Read, extent[0], fileRow, nx, rows, block, nx, rows,
           GDT_Float32, 0, 0) != CE_None)
     {
-      vtkErrorMacro("Cannot read \"" << this->FileName << "\": " << raster.Session.LastError());
+      vtkErrorMacro("Cannot read " << vtkApertureText::QuoteName(this->FileName) << ": "
+                                   << raster.Session.LastError());
       return false;
     }
     if (northUp)

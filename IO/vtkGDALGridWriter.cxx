@@ -10,6 +10,7 @@
 =========================================================================*/
 #include "vtkGDALGridWriter.h"
 
+#include "vtkApertureText.h"
 #include "vtkGDALSession.h"
 #include "vtkHorizonHeightField.h"
 
@@ -138,7 +139,8 @@ bool vtkGDALGridWriter::vtkFile::Create(const int whole[6], const std::vector<st
   CSLDestroy(options);
   if (!this->Dataset)
   {
-    error = "cannot create \"" + this->Name + "\": " + this->Session.LastError();
+    error =
+      "cannot create " + vtkApertureText::QuoteName(this->Name) + ": " + this->Session.LastError();
     return false;
   }
   double gt[6];
@@ -146,7 +148,8 @@ bool vtkGDALGridWriter::vtkFile::Create(const int whole[6], const std::vector<st
   if (GDALSetGeoTransform(this->Dataset, gt) != CE_None ||
     (!geo.WKT.empty() && GDALSetProjection(this->Dataset, geo.WKT.c_str()) != CE_None))
   {
-    error = "cannot georeference \"" + this->Name + "\": " + this->Session.LastError();
+    error = "cannot georeference " + vtkApertureText::QuoteName(this->Name) + ": " +
+      this->Session.LastError();
     return false;
   }
   for (size_t b = 0; b < bands.size(); ++b)
@@ -173,7 +176,8 @@ bool vtkGDALGridWriter::vtkFile::Flush(bool close, std::string& error)
   }
   if (CPLGetLastErrorType() >= CE_Failure)
   {
-    error = "cannot write \"" + this->Name + "\": " + this->Session.LastError();
+    error =
+      "cannot write " + vtkApertureText::QuoteName(this->Name) + ": " + this->Session.LastError();
     if (close)
     {
       VSIUnlink(this->Name.c_str());
@@ -191,7 +195,8 @@ bool vtkGDALGridWriter::vtkFile::WriteBand(
   if (GDALRasterIO(h, GF_Write, fileColumn, fileRow, nx, rows, const_cast<float*>(values), nx, rows,
         GDT_Float32, 0, 0) != CE_None)
   {
-    error = "cannot write \"" + this->Name + "\": " + this->Session.LastError();
+    error =
+      "cannot write " + vtkApertureText::QuoteName(this->Name) + ": " + this->Session.LastError();
     return false;
   }
   return true;
@@ -280,7 +285,8 @@ bool vtkGDALGridWriter::ChooseArrays(vtkImageData* image, std::vector<std::strin
   {
     if (!pd->GetArray(name.c_str()))
     {
-      vtkErrorMacro("The input has no numeric point array \"" << name << "\"; nothing written.");
+      vtkErrorMacro("The input has no numeric point array " << vtkApertureText::Quote(name)
+                                                            << "; nothing written.");
       return false;
     }
   }
@@ -406,7 +412,8 @@ bool vtkGDALGridWriter::WriteTile(vtkFile& file, vtkImageData* image, const int 
     vtkDataArray* array = image->GetPointData()->GetArray(name.c_str());
     if (!array)
     {
-      vtkErrorMacro("A tile has no point array \"" << name << "\"; nothing written.");
+      vtkErrorMacro(
+        "A tile has no point array " << vtkApertureText::Quote(name) << "; nothing written.");
       return false;
     }
     for (int c = 0; c < array->GetNumberOfComponents(); ++c, ++band)

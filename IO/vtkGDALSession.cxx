@@ -10,6 +10,8 @@
 =========================================================================*/
 #include "vtkGDALSession.h"
 
+#include "vtkApertureText.h"
+
 #include <cpl_error.h>
 #include <gdal.h>
 
@@ -33,6 +35,7 @@ vtkGDALSession::~vtkGDALSession()
 //------------------------------------------------------------------------------
 std::string vtkGDALSession::LastError() const
 {
+  // GDAL's messages quote the files it reads.
   const char* message = CPLGetLastErrorMsg();
-  return message && *message ? message : "unknown error";
+  return message && *message ? vtkApertureText::Line(message, 200) : "unknown error";
 }

@@ -10,6 +10,7 @@
 =========================================================================*/
 #include "vtkOpenEXRReader.h"
 
+#include "vtkApertureText.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -280,8 +281,8 @@ private:
       this->At += 4;
       if (length < 0 || static_cast<uint64_t>(length) > this->Size - this->At)
       {
-        error = "its header attribute '" + attribute + "' claims " + std::to_string(length) +
-          " bytes, more than the file holds (truncated or damaged)";
+        error = "its header attribute " + vtkApertureText::Quote(attribute) + " claims " +
+          std::to_string(length) + " bytes, more than the file holds (truncated or damaged)";
         return false;
       }
       if (!CheckAttribute(
@@ -320,7 +321,8 @@ std::unique_ptr<Imf::InputFile> Open(const std::string& fileName, const void* bu
   vtkIdType length, int maximumSide, Source& source, std::unique_ptr<MemoryStream>& stream,
   std::string& error)
 {
-  const std::string what = buffer ? std::string("The memory buffer") : "'" + fileName + "'";
+  const std::string what =
+    buffer ? std::string("The memory buffer") : vtkApertureText::QuoteName(fileName);
   if (buffer)
   {
     source.Data = static_cast<const char*>(buffer);
@@ -330,7 +332,7 @@ std::unique_ptr<Imf::InputFile> Open(const std::string& fileName, const void* bu
   {
     if (fileName.empty() || !vtksys::SystemTools::FileExists(fileName, true))
     {
-      error = "OpenEXR file '" + fileName + "' does not exist";
+      error = "OpenEXR file " + vtkApertureText::QuoteName(fileName) + " does not exist";
       return nullptr;
     }
     std::ifstream in(fileName, std::ios::binary);
@@ -356,7 +358,7 @@ std::unique_ptr<Imf::InputFile> Open(const std::string& fileName, const void* bu
   }
   catch (const std::exception& e)
   {
-    error = what + " cannot be read as OpenEXR: " + e.what();
+    error = what + " cannot be read as OpenEXR: " + vtkApertureText::Line(e.what(), 200);
   }
   return nullptr;
 }
@@ -390,10 +392,10 @@ int vtkOpenEXRReader::RequestInformation(
     std::string names;
     for (auto c = header.channels().begin(); c != header.channels().end(); ++c)
     {
-      names += std::string(names.empty() ? "" : ", ") + c.name();
+      names += std::string(names.empty() ? "" : ", ") + vtkApertureText::Quote(c.name(), 24);
     }
     vtkErrorMacro("The EXR has no R, G, B or Y channel to read (it has: "
-      << (names.empty() ? std::string("none") : names) << ").");
+      << (names.empty() ? std::string("none") : vtkApertureText::Line(names, 200)) << ").");
     return 0;
   }
   const int components = ComponentsOf(layout);
@@ -555,7 +557,8 @@ int vtkOpenEXRReader::RequestData(
   }
   catch (const std::exception& e)
   {
-    vtkErrorMacro("The EXR's pixels cannot be read: " << e.what() << ".");
+    vtkErrorMacro(
+      "The EXR's pixels cannot be read: " << vtkApertureText::Line(e.what(), 200) << ".");
     return 0;
   }
   // 2. The display window's radiance, its unusable values repaired and counted.

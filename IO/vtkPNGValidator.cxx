@@ -10,6 +10,7 @@
 =========================================================================*/
 #include "vtkPNGValidator.h"
 
+#include "vtkApertureText.h"
 #include "vtkObjectFactory.h"
 #include "vtk_zlib.h"
 #include "vtksys/SystemTools.hxx"
@@ -316,17 +317,17 @@ std::string vtkPNGValidator::CheckFile(const char* fileName)
   const std::string name = fileName ? fileName : "";
   if (name.empty() || !vtksys::SystemTools::FileExists(name, true))
   {
-    return "'" + name + "' does not exist";
+    return vtkApertureText::QuoteName(name) + " does not exist";
   }
   std::ifstream in(name, std::ios::binary);
   if (!in)
   {
-    return "'" + name + "' cannot be read";
+    return vtkApertureText::QuoteName(name) + " cannot be read";
   }
   const std::vector<char> bytes(
     (std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const std::string problem = vtkPNGValidator::CheckBuffer(bytes.data(), bytes.size());
-  return problem.empty() ? problem : "'" + name + "' " + problem;
+  return problem.empty() ? problem : vtkApertureText::QuoteName(name) + " " + problem;
 }
 
 //------------------------------------------------------------------------------

@@ -10,6 +10,7 @@
 =========================================================================*/
 #include "vtkTerrainRGBReader.h"
 
+#include "vtkApertureText.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -102,8 +103,8 @@ int vtkTerrainRGBReader::RequestData(
   png->Update();
   vtkImageData* image = png->GetOutput();
   auto* rgb = vtkUnsignedCharArray::SafeDownCast(image->GetPointData()->GetScalars());
-  const std::string source =
-    this->MemoryBuffer ? std::string("The memory buffer") : "'" + this->FileName + "'";
+  const std::string source = this->MemoryBuffer ? std::string("The memory buffer")
+                                                : vtkApertureText::QuoteName(this->FileName);
   if (!rgb || rgb->GetNumberOfComponents() < 3)
   {
     vtkErrorMacro(<< source

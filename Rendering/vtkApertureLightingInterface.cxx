@@ -11,6 +11,7 @@
 #include "vtkApertureLightingInterface.h"
 
 #include "vtkApertureLightingFS.h"
+#include "vtkApertureText.h"
 #include "vtkSphericalCap.h"
 #include "vtkSphericalCapGLSL.h"
 
@@ -56,23 +57,23 @@ std::string ArrayProblem(vtkDataSet* data, const std::string& name, int componen
   vtkDataArray* array = data->GetPointData()->GetArray(name.c_str());
   if (!array)
   {
-    return "there is no point-data array named '" + name + "'";
+    return "there is no point-data array named " + vtkApertureText::Quote(name);
   }
   if (array->GetNumberOfComponents() != components)
   {
-    return "'" + name + "' has " + std::to_string(array->GetNumberOfComponents()) +
+    return vtkApertureText::Quote(name) + " has " + std::to_string(array->GetNumberOfComponents()) +
       " components instead of " + std::to_string(components);
   }
   if (array->GetNumberOfTuples() != data->GetNumberOfPoints())
   {
-    return "'" + name + "' has " + std::to_string(array->GetNumberOfTuples()) + " tuples for " +
-      std::to_string(data->GetNumberOfPoints()) + " points";
+    return vtkApertureText::Quote(name) + " has " + std::to_string(array->GetNumberOfTuples()) +
+      " tuples for " + std::to_string(data->GetNumberOfPoints()) + " points";
   }
   for (vtkIdType i = 0; i < array->GetNumberOfValues(); ++i)
   {
     if (!std::isfinite(array->GetComponent(i / components, static_cast<int>(i % components))))
     {
-      return "'" + name + "' has non-finite values";
+      return vtkApertureText::Quote(name) + " has non-finite values";
     }
   }
   return std::string();

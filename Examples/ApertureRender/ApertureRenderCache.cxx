@@ -14,6 +14,7 @@
 #include "ApertureRenderMessages.h"
 #include "ApertureRenderOptions.h"
 
+#include "vtkApertureText.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
@@ -125,7 +126,8 @@ vtkSmartPointer<vtkDataObject> ReadCache(const std::string& path, const std::str
   }
   if (!reader->CanReadFile(path.c_str()))
   {
-    note = "the cache '" + path + "' is not a VTK XML file of the right type; recomputing";
+    note = "the cache " + vtkApertureText::QuoteName(path) +
+      " is not a VTK XML file of the right type; recomputing";
     return nullptr;
   }
   reader->SetFileName(path.c_str());
@@ -134,7 +136,8 @@ vtkSmartPointer<vtkDataObject> ReadCache(const std::string& path, const std::str
   auto* data = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
   if (!messages.FirstError().empty() || !data)
   {
-    note = "the cache '" + path + "' cannot be read (" + messages.FirstError() + "); recomputing";
+    note = "the cache " + vtkApertureText::QuoteName(path) + " cannot be read (" +
+      messages.FirstError() + "); recomputing";
     messages.Clear();
     return nullptr;
   }
@@ -144,7 +147,8 @@ vtkSmartPointer<vtkDataObject> ReadCache(const std::string& path, const std::str
     !data->GetPointData()->GetArray("BentNormal") ||
     !data->GetPointData()->GetArray("ApertureRadius"))
   {
-    note = "the cache '" + path + "' was made for other data or settings; recomputing";
+    note = "the cache " + vtkApertureText::QuoteName(path) +
+      " was made for other data or settings; recomputing";
     return nullptr;
   }
   data->GetFieldData()->RemoveArray(FingerprintName);
@@ -182,7 +186,7 @@ bool WriteCache(const std::string& path, vtkDataObject* apertures, const std::st
   messages.Clear();
   if (!writer->Write() || !messages.FirstError().empty())
   {
-    error = "cannot write the cache '" + path + "'" +
+    error = "cannot write the cache " + vtkApertureText::QuoteName(path) +
       (messages.FirstError().empty() ? std::string() : ": " + messages.FirstError());
     return false;
   }

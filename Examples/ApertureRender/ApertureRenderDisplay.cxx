@@ -10,6 +10,8 @@
 =========================================================================*/
 #include "ApertureRenderDisplay.h"
 
+#include "vtkApertureText.h"
+
 #include <X11/Xlib.h>
 
 #include <cstdlib>
@@ -31,7 +33,8 @@ void* OpenDisplay(std::string& error)
   if (depth < 24)
   {
     XCloseDisplay(display);
-    error = std::string("the X display '") + (name ? name : "") + "' has " + std::to_string(depth) +
+    error = "the X display " + vtkApertureText::Quote(name ? name : "") + " has " +
+      std::to_string(depth) +
       "-bit colour; OpenGL needs 24 (with Xvfb: xvfb-run -a -s '-screen 0 1280x1024x24')";
     return nullptr;
   }

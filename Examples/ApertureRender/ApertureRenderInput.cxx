@@ -17,6 +17,7 @@
 
 #include "vtkApertureRefinement.h"
 #include "vtkApertureSurface.h"
+#include "vtkApertureText.h"
 #include "vtkCellArray.h"
 #include "vtkDEMReader.h"
 #include "vtkFloatArray.h"
@@ -101,7 +102,7 @@ bool CheckDEM(const std::string& name, std::string& error)
   FILE* file = vtksys::SystemTools::Fopen(name, "rb");
   if (!file)
   {
-    error = Quoted(name) + " cannot be read";
+    error = vtkApertureText::QuoteName(name) + " cannot be read";
     return false;
   }
   char record[1025] = { 0 };
@@ -129,7 +130,8 @@ bool CheckDEM(const std::string& name, std::string& error)
     !std::isfinite(resolution[0]) || !std::isfinite(resolution[1]))
   {
     std::fclose(file);
-    error = Quoted(name) + " is not a USGS DEM (its type A record is incomplete or invalid)";
+    error = vtkApertureText::QuoteName(name) +
+      " is not a USGS DEM (its type A record is incomplete or invalid)";
     return false;
   }
   // As vtkDEMReader::ComputeExtentOriginAndSpacing: corners SW, NW, NE, SE.
@@ -141,7 +143,7 @@ bool CheckDEM(const std::string& name, std::string& error)
   {
     std::fclose(file);
     std::ostringstream what;
-    what << Quoted(name) << " is a DEM of " << columns << " x " << rows
+    what << vtkApertureText::QuoteName(name) << " is a DEM of " << columns << " x " << rows
          << " samples; VTK's DEM reader needs 100 to 16384 columns and 2 or more rows";
     error = what.str();
     return false;
@@ -158,14 +160,15 @@ bool CheckDEM(const std::string& name, std::string& error)
     if (std::fscanf(file, "%120c", header2) != 1)
     {
       std::fclose(file);
-      error = Quoted(name) + " is truncated (a profile header is cut off)";
+      error = vtkApertureText::QuoteName(name) + " is truncated (a profile header is cut off)";
       return false;
     }
     const double row = id[0] - 1.0, col = id[1] - 1.0, last = row + size[0] - 1.0;
     if (col < 0 || col >= columns || row < 0 || last >= rows)
     {
       std::fclose(file);
-      error = Quoted(name) + " is damaged (a profile lies outside the grid its header declares)";
+      error = vtkApertureText::QuoteName(name) +
+        " is damaged (a profile lies outside the grid its header declares)";
       return false;
     }
     int value;
@@ -174,7 +177,7 @@ bool CheckDEM(const std::string& name, std::string& error)
       if (std::fscanf(file, "%6d", &value) != 1)
       {
         std::fclose(file);
-        error = Quoted(name) + " is truncated (a profile ends early)";
+        error = vtkApertureText::QuoteName(name) + " is truncated (a profile ends early)";
         return false;
       }
     }
@@ -250,7 +253,7 @@ bool LoadHeightField(const std::string& name, const std::string& extension, cons
     raster->Update();
     if (!messages.FirstError().empty())
     {
-      error = "cannot read " + Quoted(name) + ": " + messages.FirstError();
+      error = "cannot read " + vtkApertureText::QuoteName(name) + ": " + messages.FirstError();
       return false;
     }
     image = raster->GetOutput();
@@ -290,8 +293,8 @@ bool LoadHeightField(const std::string& name, const std::string& extension, cons
     const auto side = static_cast<int>(std::lround(std::sqrt(bytes / 2.0)));
     if (side < 2 || 2ul * side * side != bytes)
     {
-      error = Quoted(name) + " is not an SRTM tile: its " + std::to_string(bytes) +
-        " bytes are not N x N 16-bit samples";
+      error = vtkApertureText::QuoteName(name) + " is not an SRTM tile: its " +
+        std::to_string(bytes) + " bytes are not N x N 16-bit samples";
       return false;
     }
     vtkNew<vtkImageReader2> raw;
@@ -305,7 +308,7 @@ bool LoadHeightField(const std::string& name, const std::string& extension, cons
     raw->Update();
     if (!messages.FirstError().empty())
     {
-      error = "cannot read " + Quoted(name) + ": " + messages.FirstError();
+      error = "cannot read " + vtkApertureText::QuoteName(name) + ": " + messages.FirstError();
       return false;
     }
     image = AsHeights(raw->GetOutput());
@@ -333,7 +336,8 @@ bool LoadHeightField(const std::string& name, const std::string& extension, cons
   }
   if (!messages.FirstError().empty() || !image || image->GetNumberOfPoints() == 0)
   {
-    error = "cannot read " + Quoted(name) + ": " + messages.FirstErrorOr("no heights in it");
+    error = "cannot read " + vtkApertureText::QuoteName(name) + ": " +
+      messages.FirstErrorOr("no heights in it");
     return false;
   }
   input.Heights = image;
@@ -428,17 +432,17 @@ bool LoadInput(const Options& options, MessageCapture& messages, Input& input, s
   {
     if (!vtksys::SystemTools::FileExists(name))
     {
-      error = Quoted(name) + " does not exist";
+      error = vtkApertureText::QuoteName(name) + " does not exist";
       return false;
     }
     if (vtksys::SystemTools::FileIsDirectory(name))
     {
-      error = Quoted(name) + " is a directory, not a file";
+      error = vtkApertureText::QuoteName(name) + " is a directory, not a file";
       return false;
     }
     if (vtksys::SystemTools::FileLength(name) == 0)
     {
-      error = Quoted(name) + " is empty";
+      error = vtkApertureText::QuoteName(name) + " is empty";
       return false;
     }
     const std::string extension =
@@ -457,7 +461,7 @@ bool LoadInput(const Options& options, MessageCapture& messages, Input& input, s
     }
     if (std::find(fields.begin(), fields.end(), extension) == fields.end())
     {
-      error = Quoted(name) + " has an unknown format" +
+      error = vtkApertureText::QuoteName(name) + " has an unknown format" +
         (extension.empty() ? std::string() : " (" + extension + ")") +
         "; known: .obj .ply .stl .vtp .vtk .png .tif .tiff .asc .img .vrt .dem .hgt";
       return false;
@@ -481,7 +485,7 @@ bool LoadEnvironment(
   }
   if (!vtksys::SystemTools::FileExists(name) || vtksys::SystemTools::FileIsDirectory(name))
   {
-    error = "--env " + Quoted(name) + " does not exist or is not a file";
+    error = "--env " + vtkApertureText::QuoteName(name) + " does not exist or is not a file";
     return false;
   }
   vtkNew<vtkOpenEXRReader> reader;
@@ -490,13 +494,13 @@ bool LoadEnvironment(
   reader->Update();
   if (!messages.FirstError().empty() || reader->GetOutput()->GetNumberOfPoints() == 0)
   {
-    error = "--env " + Quoted(name) + " cannot be used: " +
+    error = "--env " + vtkApertureText::QuoteName(name) + " cannot be used: " +
       (messages.FirstError().empty() ? std::string("it holds no pixels") : messages.FirstError());
     return false;
   }
   for (const std::string& warning : messages.Warnings())
   {
-    input.Notes.push_back("--env " + Quoted(name) + ": " + warning);
+    input.Notes.push_back("--env " + vtkApertureText::QuoteName(name) + ": " + warning);
   }
   input.Environment = reader->GetOutput();
   int dims[3];
@@ -504,7 +508,7 @@ bool LoadEnvironment(
   if (dims[0] != 2 * dims[1])
   {
     std::ostringstream note;
-    note << "--env " << Quoted(name) << " is " << dims[0] << " x " << dims[1]
+    note << "--env " << vtkApertureText::QuoteName(name) << " is " << dims[0] << " x " << dims[1]
          << ", not 2:1; it is stretched over the sphere as a latitude-longitude map";
     input.Notes.push_back(note.str());
   }

@@ -16,6 +16,7 @@
 #include "ApertureRenderPLY.h"
 
 #include "vtkApertureCellCheck.h"
+#include "vtkApertureText.h"
 #include "vtkCellArray.h"
 #include "vtkDataSetReader.h"
 #include "vtkDataSetSurfaceFilter.h"
@@ -96,8 +97,8 @@ bool CheckSTL(const std::string& name, std::string& error)
   if (!header || size < 84 + 50 * triangles)
   {
     std::ostringstream what;
-    what << Quoted(name) << " is truncated (its header announces " << triangles << " triangles, "
-         << (size > 84 ? (size - 84) / 50 : 0) << " are there)";
+    what << vtkApertureText::QuoteName(name) << " is truncated (its header announces " << triangles
+         << " triangles, " << (size > 84 ? (size - 84) / 50 : 0) << " are there)";
     error = what.str();
     return false;
   }
@@ -206,7 +207,8 @@ bool CheckVTPSizes(
     const double piece = isPiece ? VTPPieceValues(element) : VTPArrayValues(element, 0.0);
     if (piece < 0.0)
     {
-      error = Quoted(name) + " is damaged (a count that is not a number of items)";
+      error =
+        vtkApertureText::QuoteName(name) + " is damaged (a count that is not a number of items)";
       return false;
     }
     values += piece;
@@ -214,8 +216,8 @@ bool CheckVTPSizes(
   if (values > capacity)
   {
     std::ostringstream what;
-    what << Quoted(name) << " is damaged: its counts announce " << values << " values, more than "
-         << static_cast<unsigned long>(fileSize) << " bytes can hold";
+    what << vtkApertureText::QuoteName(name) << " is damaged: its counts announce " << values
+         << " values, more than " << static_cast<unsigned long>(fileSize) << " bytes can hold";
     error = what.str();
     return false;
   }
@@ -234,7 +236,8 @@ bool CheckVTP(vtkXMLPolyDataReader* reader, MessageCapture& messages, const std:
   vtkXMLDataElement* data = root ? root->FindNestedElementWithName("PolyData") : nullptr;
   if (!messages.FirstError().empty() || !data)
   {
-    error = "cannot read " + Quoted(name) + ": " + messages.FirstErrorOr("no PolyData element");
+    error = "cannot read " + vtkApertureText::QuoteName(name) + ": " +
+      messages.FirstErrorOr("no PolyData element");
     return false;
   }
   for (int i = 0; i < data->GetNumberOfNestedElements(); ++i)
@@ -244,14 +247,16 @@ bool CheckVTP(vtkXMLPolyDataReader* reader, MessageCapture& messages, const std:
     int components = 1;
     if (array && (!array->GetScalarAttribute("NumberOfComponents", components) || components != 3))
     {
-      error = Quoted(name) + " is damaged (its points do not have 3 components)";
+      error =
+        vtkApertureText::QuoteName(name) + " is damaged (its points do not have 3 components)";
       return false;
     }
   }
   const std::string shared = SharedArrayName(data);
   if (!shared.empty())
   {
-    error = Quoted(name) + " is damaged (two arrays of one group are named " + Quoted(shared) + ")";
+    error = vtkApertureText::QuoteName(name) + " is damaged (two arrays of one group are named " +
+      vtkApertureText::Quote(shared) + ")";
     return false;
   }
   return CheckVTPSizes(root, data, name, error);
@@ -269,18 +274,20 @@ bool Run(
   }
   catch (const std::bad_alloc&)
   {
-    error = "cannot read " + Quoted(name) + ": it asks for more memory than there is (damaged?)";
+    error = "cannot read " + vtkApertureText::QuoteName(name) +
+      ": it asks for more memory than there is (damaged?)";
     return false;
   }
   if (!messages.FirstError().empty() || !reader->GetOutputDataObject(0))
   {
-    error = "cannot read " + Quoted(name) + ": " + messages.FirstErrorOr("unknown error");
+    error = "cannot read " + vtkApertureText::QuoteName(name) + ": " +
+      messages.FirstErrorOr("unknown error");
     return false;
   }
   const std::string bad = BadCell(reader->GetOutputDataObject(0));
   if (!bad.empty())
   {
-    error = Quoted(name) + " is damaged: " + bad;
+    error = vtkApertureText::QuoteName(name) + " is damaged: " + bad;
     return false;
   }
   return true;
@@ -303,7 +310,7 @@ vtkSmartPointer<vtkAlgorithm> NewLegacySurface(
   legacy->CloseVTKFile();
   if (!header)
   {
-    error = Quoted(name) + " is not a VTK legacy file";
+    error = vtkApertureText::QuoteName(name) + " is not a VTK legacy file";
     return nullptr;
   }
   if (!Run(legacy, messages, name, error))
@@ -343,7 +350,7 @@ vtkSmartPointer<vtkAlgorithm> NewReader(const std::string& name, const std::stri
     auto vtp = vtkSmartPointer<vtkXMLPolyDataReader>::New();
     if (!vtp->CanReadFile(name.c_str()))
     {
-      error = Quoted(name) + " is not a VTK XML polydata file";
+      error = vtkApertureText::QuoteName(name) + " is not a VTK XML polydata file";
       return nullptr;
     }
     vtp->SetFileName(name.c_str());
@@ -353,7 +360,8 @@ vtkSmartPointer<vtkAlgorithm> NewReader(const std::string& name, const std::stri
   {
     return NewLegacySurface(name, messages, error);
   }
-  error = error.empty() ? Quoted(name) + " is not a mesh file this reads" : error;
+  error =
+    error.empty() ? vtkApertureText::QuoteName(name) + " is not a mesh file this reads" : error;
   return nullptr;
 }
 }
@@ -376,8 +384,8 @@ bool LoadMesh(const std::string& name, const std::string& extension, MessageCapt
   if (mesh->GetNumberOfPolys() + mesh->GetNumberOfStrips() == 0)
   {
     std::ostringstream what;
-    what << Quoted(name) << " has no polygons to shade (" << mesh->GetNumberOfPoints()
-         << " points, " << mesh->GetNumberOfLines() << " lines)";
+    what << vtkApertureText::QuoteName(name) << " has no polygons to shade ("
+         << mesh->GetNumberOfPoints() << " points, " << mesh->GetNumberOfLines() << " lines)";
     error = what.str();
     return false;
   }

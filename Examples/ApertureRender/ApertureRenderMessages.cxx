@@ -11,6 +11,7 @@
 #include "ApertureRenderMessages.h"
 
 #include "vtkAlgorithm.h"
+#include "vtkApertureText.h"
 #include "vtkCommand.h"
 #include "vtkLogger.h"
 #include "vtkOutputWindow.h"
@@ -68,7 +69,9 @@ MessageCapture::~MessageCapture()
 void MessageCapture::OnMessage(vtkObject*, unsigned long event, void* clientData, void* callData)
 {
   auto* self = static_cast<MessageCapture*>(clientData);
-  const std::string text = Sentence(callData ? static_cast<const char*>(callData) : "");
+  // VTK's readers quote the files they read: the text is kept as one safe line.
+  const std::string text =
+    vtkApertureText::Line(Sentence(callData ? static_cast<const char*>(callData) : ""));
   (event == vtkCommand::ErrorEvent ? self->ErrorTexts : self->WarningTexts).push_back(text);
 }
 
@@ -81,11 +84,6 @@ std::string MessageCapture::FirstErrorOr(const std::string& fallback) const
 {
   const std::string error = this->FirstError();
   return error.empty() ? fallback : error;
-}
-
-std::string Quoted(const std::string& name)
-{
-  return "'" + name + "'";
 }
 
 std::string MessageCapture::LastError() const

@@ -52,9 +52,6 @@ private:
   std::vector<std::string> ErrorTexts, WarningTexts;
 };
 
-// A file name as the messages quote it.
-std::string Quoted(const std::string& name);
-
 // A progress bar on stderr for an algorithm's ProgressEvents, drawn only on a terminal.
 class ProgressBar
 {

@@ -12,6 +12,7 @@
 
 #include "ApertureRenderMessages.h"
 
+#include "vtkApertureText.h"
 #include "vtksys/SystemTools.hxx"
 
 #include <cstdio>
@@ -60,7 +61,7 @@ bool CheckElement(std::istringstream& words, const Counts& counts, std::string& 
   {
     if (word.back() == '/')
     {
-      what = "a word ending in '/', " + word;
+      what = "a word ending in '/', " + vtkApertureText::Quote(word);
       return false;
     }
     std::istringstream parts(word);
@@ -77,8 +78,8 @@ bool CheckElement(std::istringstream& words, const Counts& counts, std::string& 
         ((index > 0 && index <= counts.Total[k]) || (index < 0 && -index <= counts.Seen[k]));
       if (!valid)
       {
-        what =
-          std::string(Kinds[k]) + " " + part + ", but there are " + std::to_string(counts.Total[k]);
+        what = std::string(Kinds[k]) + " " + vtkApertureText::Quote(part) + ", but there are " +
+          std::to_string(counts.Total[k]);
         return false;
       }
       if (k == 1 && counts.Materials && !counts.Material)
@@ -144,7 +145,7 @@ bool CheckOBJ(const std::string& name, std::string& error)
   std::vector<std::string> lines;
   if (!ReadLines(name, lines))
   {
-    error = Quoted(name) + " cannot be read";
+    error = vtkApertureText::QuoteName(name) + " cannot be read";
     return false;
   }
   Counts counts;
@@ -164,7 +165,8 @@ bool CheckOBJ(const std::string& name, std::string& error)
     std::string what;
     if (!CheckLine(lines[number], counts, what))
     {
-      error = Quoted(name) + " is damaged (line " + std::to_string(number + 1) + ": " + what + ")";
+      error = vtkApertureText::QuoteName(name) + " is damaged (line " + std::to_string(number + 1) +
+        ": " + what + ")";
       return false;
     }
   }

@@ -12,6 +12,7 @@
 
 #include "ApertureRenderMessages.h"
 
+#include "vtkApertureText.h"
 #include "vtksys/CommandLineArguments.hxx"
 #include "vtksys/SystemTools.hxx"
 
@@ -155,13 +156,14 @@ int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
   {
     if (word.size() > 1 && word[0] == '-')
     {
-      error = "unknown option " + Quoted(word) + " (see --help)";
+      error = "unknown option " + vtkApertureText::Quote(word) + " (see --help)";
       return 2;
     }
   }
   if (positional.size() > 1)
   {
-    error = "one input at a time, got " + Quoted(positional[0]) + " and " + Quoted(positional[1]);
+    error = "one input at a time, got " + vtkApertureText::QuoteName(positional[0]) + " and " +
+      vtkApertureText::QuoteName(positional[1]);
     return 2;
   }
   options.Input = positional.empty() ? "" : positional[0];
@@ -182,7 +184,8 @@ int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
       !ToNumber(size.substr(x + 1), h) || w != std::floor(w) || h != std::floor(h) || w < 16 ||
       h < 16 || w > 8192 || h > 8192)
     {
-      error = "--size " + Quoted(size) + " is not WIDTHxHEIGHT in pixels (16 to 8192 each)";
+      error = "--size " + vtkApertureText::Quote(size) +
+        " is not WIDTHxHEIGHT in pixels (16 to 8192 each)";
       return 2;
     }
     options.Width = static_cast<int>(w);
@@ -203,7 +206,7 @@ int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
     }
     if (!known)
     {
-      error = "--mode " + Quoted(mode) +
+      error = "--mode " + vtkApertureText::Quote(mode) +
         " is not one of exact, smoothstep, simplified, bentnormal, standard, all";
       return 2;
     }
@@ -213,7 +216,7 @@ int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
   {
     if (show != "shading" && show != "apertures")
     {
-      error = "--show " + Quoted(show) + " is not shading or apertures";
+      error = "--show " + vtkApertureText::Quote(show) + " is not shading or apertures";
       return 2;
     }
     options.ShowApertures = show == "apertures";
@@ -223,7 +226,7 @@ int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
     if (!ToNumbers(sun, 2, 3, numbers) || numbers[1] < -90.0 || numbers[1] > 90.0 ||
       (numbers.size() == 3 && (numbers[2] < 0.0 || numbers[2] > 90.0)))
     {
-      error = "--sun " + Quoted(sun) +
+      error = "--sun " + vtkApertureText::Quote(sun) +
         " is not AZIMUTH,ELEVATION[,ANGULAR_RADIUS] in degrees (elevation -90 to 90, radius 0 to "
         "90)";
       return 2;
@@ -235,7 +238,7 @@ int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
     if (!ToNumbers(light, 4, 5, numbers) || numbers[3] <= 0.0 ||
       (numbers.size() == 5 && numbers[4] < 0.0))
     {
-      error = "--sphere-light " + Quoted(light) +
+      error = "--sphere-light " + vtkApertureText::Quote(light) +
         " is not X,Y,Z,RADIUS[,INTENSITY] (radius > 0, intensity >= 0)";
       return 2;
     }
@@ -246,7 +249,7 @@ int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
   {
     if (!ToNumbers(sky, 3, 3, numbers) || numbers[0] < 0.0 || numbers[1] < 0.0 || numbers[2] < 0.0)
     {
-      error = "--sky " + Quoted(sky) + " is not R,G,B (each >= 0)";
+      error = "--sky " + vtkApertureText::Quote(sky) + " is not R,G,B (each >= 0)";
       return 2;
     }
     std::copy(numbers.begin(), numbers.end(), options.Sky);
@@ -258,7 +261,7 @@ int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
       vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(environment));
     if (extension != ".exr")
     {
-      error = "--env " + Quoted(environment) + " is not an OpenEXR file (.exr)";
+      error = "--env " + vtkApertureText::QuoteName(environment) + " is not an OpenEXR file (.exr)";
       return 2;
     }
     options.Environment = environment;
@@ -273,7 +276,7 @@ int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
     (!ToNumber(environmentExposure, options.EnvironmentExposure) ||
       std::abs(options.EnvironmentExposure) > 64.0))
   {
-    error = "--env-exposure " + Quoted(environmentExposure) +
+    error = "--env-exposure " + vtkApertureText::Quote(environmentExposure) +
       " is not 'auto' or a number of stops from -64 to 64";
     return 2;
   }
@@ -281,7 +284,8 @@ int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
   {
     if (!ToNumber(environmentAzimuth, options.EnvironmentAzimuth))
     {
-      error = "--env-azimuth " + Quoted(environmentAzimuth) + " is not a number of degrees";
+      error = "--env-azimuth " + vtkApertureText::Quote(environmentAzimuth) +
+        " is not a number of degrees";
       return 2;
     }
   }
@@ -290,7 +294,7 @@ int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
     if (!ToNumbers(background, 3, 3, numbers) || numbers[0] < 0.0 || numbers[1] < 0.0 ||
       numbers[2] < 0.0 || numbers[0] > 1.0 || numbers[1] > 1.0 || numbers[2] > 1.0)
     {
-      error = "--background " + Quoted(background) + " is not R,G,B (each 0 to 1)";
+      error = "--background " + vtkApertureText::Quote(background) + " is not R,G,B (each 0 to 1)";
       return 2;
     }
     std::copy(numbers.begin(), numbers.end(), options.Background);
@@ -300,7 +304,7 @@ int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
   {
     if (!ToNumber(rays, number) || number != std::floor(number) || number < 1 || number > 65536)
     {
-      error = "--rays " + Quoted(rays) + " is not a whole number from 1 to 65536";
+      error = "--rays " + vtkApertureText::Quote(rays) + " is not a whole number from 1 to 65536";
       return 2;
     }
     options.Rays = static_cast<int>(number);
@@ -310,7 +314,8 @@ int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
   {
     if (!ToNumber(sectors, number) || number != std::floor(number) || number < 4 || number > 1024)
     {
-      error = "--sectors " + Quoted(sectors) + " is not a whole number from 4 to 1024";
+      error =
+        "--sectors " + vtkApertureText::Quote(sectors) + " is not a whole number from 4 to 1024";
       return 2;
     }
     options.Sectors = static_cast<int>(number);
@@ -318,7 +323,7 @@ int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
   if (!crease.empty() &&
     (!ToNumber(crease, options.Crease) || options.Crease < 0.0 || options.Crease > 180.0))
   {
-    error = "--crease " + Quoted(crease) + " is not an angle from 0 to 180 degrees";
+    error = "--crease " + vtkApertureText::Quote(crease) + " is not an angle from 0 to 180 degrees";
     return 2;
   }
   if (!maximumEdge.empty() && maximumEdge != "auto")
@@ -329,7 +334,8 @@ int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
     }
     else if (!ToNumber(maximumEdge, options.MaximumEdge) || options.MaximumEdge <= 0.0)
     {
-      error = "--max-edge " + Quoted(maximumEdge) + " is not auto, none or a positive length";
+      error = "--max-edge " + vtkApertureText::Quote(maximumEdge) +
+        " is not auto, none or a positive length";
       return 2;
     }
   }
@@ -338,36 +344,38 @@ int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
     if (!ToNumber(maximumGrid, number) || number != std::floor(number) || number < 2 ||
       number > 16384)
     {
-      error = "--max-grid " + Quoted(maximumGrid) + " is not a whole number from 2 to 16384";
+      error = "--max-grid " + vtkApertureText::Quote(maximumGrid) +
+        " is not a whole number from 2 to 16384";
       return 2;
     }
     options.MaximumGrid = static_cast<int>(number);
   }
   if (!azimuth.empty() && !ToNumber(azimuth, options.CameraAzimuth))
   {
-    error = "--azimuth " + Quoted(azimuth) + " is not a number of degrees";
+    error = "--azimuth " + vtkApertureText::Quote(azimuth) + " is not a number of degrees";
     return 2;
   }
   if (!elevation.empty() &&
     (!ToNumber(elevation, options.CameraElevation) || std::abs(options.CameraElevation) > 89.0))
   {
-    error = "--elevation " + Quoted(elevation) + " is not a number of degrees from -89 to 89";
+    error = "--elevation " + vtkApertureText::Quote(elevation) +
+      " is not a number of degrees from -89 to 89";
     return 2;
   }
   if (!zoom.empty() && (!ToNumber(zoom, options.Zoom) || options.Zoom <= 0.0))
   {
-    error = "--zoom " + Quoted(zoom) + " is not a positive number";
+    error = "--zoom " + vtkApertureText::Quote(zoom) + " is not a positive number";
     return 2;
   }
   if (!spacing.empty() && (!ToNumber(spacing, options.Spacing) || options.Spacing <= 0.0))
   {
-    error = "--spacing " + Quoted(spacing) + " is not a positive number of metres";
+    error = "--spacing " + vtkApertureText::Quote(spacing) + " is not a positive number of metres";
     return 2;
   }
   if (!heightScale.empty() &&
     (!ToNumber(heightScale, options.HeightScale) || options.HeightScale <= 0.0))
   {
-    error = "--height-scale " + Quoted(heightScale) + " is not a positive number";
+    error = "--height-scale " + vtkApertureText::Quote(heightScale) + " is not a positive number";
     return 2;
   }
   if (!up.empty())
@@ -375,7 +383,7 @@ int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
     static const std::set<std::string> axes = { "+x", "-x", "+y", "-y", "+z", "-z", "x", "y", "z" };
     if (!axes.count(up))
     {
-      error = "--up " + Quoted(up) + " is not one of +x, -x, +y, -y, +z, -z";
+      error = "--up " + vtkApertureText::Quote(up) + " is not one of +x, -x, +y, -y, +z, -z";
       return 2;
     }
     options.Up = up.size() == 1 ? "+" + up : up;

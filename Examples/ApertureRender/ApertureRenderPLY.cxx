@@ -10,6 +10,7 @@
 =========================================================================*/
 #include "ApertureRenderPLY.h"
 
+#include "vtkApertureText.h"
 #include "vtkCellArray.h"
 
 #include <cstdint>
@@ -402,7 +403,7 @@ bool CheckPLY(const std::string& name, vtkCellArray* strips, std::string& error)
 {
   std::ifstream in(name, std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::string prefix = "'" + name + "' ";
+  const std::string prefix = vtkApertureText::QuoteName(name) + " ";
   std::vector<Element> elements;
   std::string format, problem;
   size_t bodyStart = 0;
@@ -470,7 +471,7 @@ bool CheckPLY(const std::string& name, vtkCellArray* strips, std::string& error)
   }
   else
   {
-    problem = "has an unknown format, '" + format + "'";
+    problem = "has an unknown format, " + vtkApertureText::Quote(format);
   }
   if (!good)
   {

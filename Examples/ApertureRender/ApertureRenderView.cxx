@@ -19,6 +19,7 @@
 #include "vtkActor.h"
 #include "vtkApertureLightingMapper.h"
 #include "vtkApertureSurface.h"
+#include "vtkApertureText.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
@@ -457,7 +458,7 @@ bool View::WritePicture(const std::string& path, MessageCapture& messages, std::
   writer->Write();
   if (!messages.FirstError().empty() || !vtksys::SystemTools::FileExists(path, true))
   {
-    error = "cannot write '" + path + "'" +
+    error = "cannot write " + vtkApertureText::QuoteName(path) +
       (messages.FirstError().empty() ? std::string() : ": " + messages.FirstError());
     return false;
   }
@@ -486,7 +487,7 @@ bool View::WriteData(const std::string& path, MessageCapture& messages, std::str
   }
   if (!written || !messages.FirstError().empty())
   {
-    error = "cannot write '" + path + "'" +
+    error = "cannot write " + vtkApertureText::QuoteName(path) +
       (messages.FirstError().empty() ? std::string() : ": " + messages.FirstError());
     return false;
   }

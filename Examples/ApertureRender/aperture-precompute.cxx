@@ -19,6 +19,7 @@
 #include "ApertureRenderMessages.h"
 
 #include "vtkAperturePrecompute.h"
+#include "vtkApertureText.h"
 #include "vtkGDALDEMReader.h"
 #include "vtkGDALGridWriter.h"
 
@@ -74,7 +75,7 @@ struct Options
 
 bool Fail(const std::string& message, int& status, int code)
 {
-  std::cerr << "aperture-precompute: " << message << "\n";
+  std::cerr << "aperture-precompute: " << vtkApertureText::Line(message) << "\n";
   status = code;
   return false;
 }
@@ -93,7 +94,7 @@ bool Number(const std::vector<std::string>& args, size_t& k, double low, double 
   if (end == args[k].c_str() || *end || !(value >= low && value <= high))
   {
     return Fail(flag + " takes a number from " + std::to_string(low) + " to " +
-        std::to_string(high) + ", not \"" + args[k] + "\"",
+        std::to_string(high) + ", not " + vtkApertureText::Quote(args[k]),
       status, 2);
   }
   return true;
@@ -142,7 +143,7 @@ bool Parse(const std::vector<std::string>& args, Options& o, int& status)
     }
     else if (!a.empty() && a[0] == '-')
     {
-      return Fail("unknown option " + a + " (see --help)", status, 2);
+      return Fail("unknown option " + vtkApertureText::Quote(a) + " (see --help)", status, 2);
     }
     else if (o.Input.empty())
     {
@@ -150,7 +151,8 @@ bool Parse(const std::vector<std::string>& args, Options& o, int& status)
     }
     else
     {
-      return Fail("one DEM at a time; \"" + a + "\" is a second one", status, 2);
+      return Fail(
+        "one DEM at a time; " + vtkApertureText::QuoteName(a) + " is a second one", status, 2);
     }
   }
   if (o.Input.empty() || o.Output.empty())
@@ -212,21 +214,23 @@ int main(int argc, char* argv[])
   }
   if (!ok || !messages.FirstError().empty())
   {
-    return Fail(messages.FirstErrorOr("cannot write \"" + o.Output + "\""), status, 1), status;
+    return Fail(messages.FirstErrorOr("cannot write " + vtkApertureText::QuoteName(o.Output)),
+             status, 1),
+           status;
   }
   if (!o.Quiet)
   {
     const int* extent = whole;
     const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::cout << "Wrote " << o.Output << ": " << extent[1] + 1 << " x " << extent[3] + 1
-              << " texels, " << o.Sectors << " sectors, spacing "
+    std::cout << "Wrote " << vtkApertureText::QuoteName(o.Output) << ": " << extent[1] + 1 << " x "
+              << extent[3] + 1 << " texels, " << o.Sectors << " sectors, spacing "
               << reader->GetOutput()->GetSpacing()[0] << " x "
               << reader->GetOutput()->GetSpacing()[1] << " m (" << reader->GetGroundSpacingNote()
               << "), " << seconds << " s\n";
     for (const auto& warning : messages.Warnings())
     {
-      std::cout << "note: " << warning << "\n";
+      std::cout << "note: " << vtkApertureText::Line(warning) << "\n";
     }
   }
   return 0;

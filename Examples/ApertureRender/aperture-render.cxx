@@ -21,6 +21,7 @@
 #include "ApertureRenderView.h"
 
 #include "vtkAperturePrecompute.h"
+#include "vtkApertureText.h"
 #include "vtkDataSet.h"
 #include "vtkVersion.h"
 #include "vtksys/SystemTools.hxx"
@@ -43,7 +44,7 @@ extern "C" void OnAbort(int)
   std::cout.flush();
   std::string line = "aperture-render: VTK stopped the program";
   const std::string reason = Messages ? Messages->LastError() : std::string();
-  line += reason.empty() ? std::string(".\n") : ": " + reason + "\n";
+  line += reason.empty() ? std::string(".\n") : ": " + vtkApertureText::Line(reason) + "\n";
   if (write(STDERR_FILENO, line.data(), line.size()) < 0)
   {
     _exit(1); // nothing more can be said
@@ -51,10 +52,16 @@ extern "C" void OnAbort(int)
   _exit(1);
 }
 
+// Messages quote file names and content: each is printed as one safe line (vtkApertureText).
 int Fail(const std::string& message, int code)
 {
-  std::cerr << "aperture-render: " << message << "\n";
+  std::cerr << "aperture-render: " << vtkApertureText::Line(message) << "\n";
   return code;
+}
+
+void Say(const std::string& line)
+{
+  std::cout << vtkApertureText::Line(line) << "\n";
 }
 
 // An output file's extension must be one of `extensions` and its folder must exist.
@@ -65,7 +72,7 @@ bool CheckOutput(const std::string& option, const std::string& path,
     vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(path));
   if (std::find(extensions.begin(), extensions.end(), extension) == extensions.end())
   {
-    error = option + " '" + path + "' must end in";
+    error = option + " " + vtkApertureText::QuoteName(path) + " must end in";
     for (const std::string& e : extensions)
     {
       error += " " + e;
@@ -76,7 +83,8 @@ bool CheckOutput(const std::string& option, const std::string& path,
     vtksys::SystemTools::GetFilenamePath(vtksys::SystemTools::CollapseFullPath(path));
   if (!vtksys::SystemTools::FileIsDirectory(folder))
   {
-    error = option + " '" + path + "': the folder '" + folder + "' does not exist";
+    error = option + " " + vtkApertureText::QuoteName(path) + ": the folder " +
+      vtkApertureText::QuoteName(folder) + " does not exist";
     return false;
   }
   return true;
@@ -141,10 +149,10 @@ int main(int argc, char* argv[])
   {
     return Fail("--save-data: a mesh is written as .vtp (.vti is for height fields)", 2);
   }
-  std::cout << input.Description << "\n";
+  Say(input.Description);
   for (const std::string& note : input.Notes)
   {
-    std::cout << "note: " << note << "\n";
+    Say("note: " + note);
   }
 
   // The apertures: from the cache when it was made for this input, else cast.
@@ -156,11 +164,11 @@ int main(int argc, char* argv[])
     apertures = ReadCache(options.Cache, fingerprint, field, messages, note);
     if (!note.empty())
     {
-      std::cout << "note: " << note << "\n";
+      Say("note: " + note);
     }
     if (apertures)
     {
-      std::cout << "apertures: read from the cache '" << options.Cache << "'\n";
+      Say("apertures: read from the cache " + vtkApertureText::QuoteName(options.Cache));
     }
   }
   if (!apertures)
@@ -207,7 +215,7 @@ int main(int argc, char* argv[])
       {
         return Fail(error, 1);
       }
-      std::cout << "apertures: cached in '" << options.Cache << "'\n";
+      Say("apertures: cached in " + vtkApertureText::QuoteName(options.Cache));
     }
   }
 
@@ -222,7 +230,7 @@ int main(int argc, char* argv[])
     {
       return Fail(error, 1);
     }
-    std::cout << "data: " << vtksys::SystemTools::CollapseFullPath(options.SaveData) << "\n";
+    Say("data: " + vtksys::SystemTools::CollapseFullPath(options.SaveData));
   }
   if (!options.Output.empty())
   {
@@ -230,7 +238,7 @@ int main(int argc, char* argv[])
     {
       return Fail(error, 1);
     }
-    std::cout << "wrote " << vtksys::SystemTools::CollapseFullPath(options.Output) << "\n";
+    Say("wrote " + vtksys::SystemTools::CollapseFullPath(options.Output));
   }
   if (options.Interactive)
   {

@@ -11,6 +11,7 @@
 #include "vtkApertureLightingRepresentation.h"
 
 #include "vtkApertureLightingInterface.h"
+#include "vtkApertureText.h"
 #include "vtkCompositeApertureLightingMapper.h"
 #include "vtkEnvironmentMap.h"
 #include "vtkImageData.h"
@@ -99,7 +100,8 @@ void vtkApertureLightingRepresentation::SetSkyEnvironmentFile(const char* fileNa
     }
     else
     {
-      vtkErrorMacro("Cannot read the sky environment \"" << name << "\"; the sky stays uniform.");
+      vtkErrorMacro("Cannot read the sky environment " << vtkApertureText::QuoteName(name)
+                                                       << "; the sky stays uniform.");
     }
   }
   vtkEnvironmentMap* sky = this->SkyEnvironmentLoaded ? this->SkyEnvironment.Get() : nullptr;

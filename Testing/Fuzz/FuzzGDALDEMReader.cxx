@@ -11,14 +11,16 @@
 // libFuzzer target for the DEM reading path: the bytes as a file GDAL opens (in GDAL's memory
 // file system), vtkGDALDEMReader on at most 64 x 64 texels of it (the update extent, as a tiled
 // pipeline asks), then vtkAperturePrecompute's horizon sweeps on what it read. Any input must end
-// in a height field or a reported error, without a crash, a leak or undefined behaviour.
+// in a height field or a reported error, without a crash, a leak or undefined behaviour, and every
+// message it gives must be safe to print (FuzzMessages.h).
+
+#include "FuzzMessages.h"
 
 #include "vtkAperturePrecompute.h"
 #include "vtkGDALDEMReader.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkNew.h"
-#include "vtkObject.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <cpl_vsi.h>
@@ -30,7 +32,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
   // Errors are the expected outcome for most inputs.
-  vtkObject::GlobalWarningDisplayOff();
+  FuzzMessageCheck messages;
   const char* name = "/vsimem/fuzz.tif";
   VSILFILE* file = VSIFileFromMemBuffer(name, const_cast<GByte*>(data), size, FALSE);
   if (!file)

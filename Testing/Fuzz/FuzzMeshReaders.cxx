@@ -11,9 +11,11 @@
 // libFuzzer target for the mesh path: the first byte picks a format (.obj, .ply or .vtp), the
 // rest is the file, read as aperture-render reads it (VTK's readers behind the checks they need)
 // and, when it gives a mesh, vtkAperturePrecompute on it. Any input must end in apertures or a
-// reported error, without a crash, a leak or undefined behaviour.
+// reported error, without a crash, a leak or undefined behaviour; the error, and every message of
+// the precompute, must be safe to print (FuzzMessages.h).
 
 #include "FuzzMeshReaders.h"
+#include "FuzzMessages.h"
 
 #include "ApertureRenderInput.h"
 #include "ApertureRenderMesh.h"
@@ -55,12 +57,18 @@ bool ReadFuzzMesh(
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
-  // Errors are the expected outcome for most inputs.
+  // Errors are the expected outcome for most inputs. While reading, VTK's readers' messages are
+  // collected (and escaped) by the reading path itself.
   vtkObject::GlobalWarningDisplayOff();
   ApertureRender::Input input;
   std::string error;
-  if (ReadFuzzMesh(data, size, input, error))
+  if (!ReadFuzzMesh(data, size, input, error))
   {
+    FuzzMessageCheck::Require(error, "mesh reading error");
+  }
+  else
+  {
+    FuzzMessageCheck messages;
     vtkNew<vtkAperturePrecompute> apertures;
     apertures->SetInputData(input.Mesh);
     apertures->SetNumberOfRays(4);

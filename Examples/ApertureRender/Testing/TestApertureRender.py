@@ -338,7 +338,7 @@ for value, name in ((float("inf"), "bunny-inf.vtp"), (float("nan"), "bunny-nan.v
 # Bad point ids: a clear line, exit 1, whatever reader took the file.
 expect_failure("OBJ face past the points",
                [write_bytes("bad-face.obj", b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n"),
-                "-o", path("x.png")], 1, "'f' names v 99, but there are 3")
+                "-o", path("x.png")], 1, "'f' names v '99', but there are 3")
 bad_ply = ("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
            "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
            "0 0 0\n1 0 0\n0 1 0\n3 0 1 500000\n")
@@ -539,6 +539,52 @@ expect_failure("no X display", [bunny, *FAST, "-o", path("x.png")], 1, "X displa
                env={k: v for k, v in os.environ.items() if k != "DISPLAY"})
 
 # Malformed command lines: exit 2.
+# Hostile bytes: a message that quotes a file (or its name) must be safe to print as it is.
+def expect_safe_failure(what, args, status, escaped):
+    """Refused with one line on stderr that is valid UTF-8, holds no byte below 0x20 but its
+    final newline, is at most 400 characters long and shows `escaped` (the quoted bytes, escaped)."""
+    result = subprocess.run([EXE, *args], capture_output=True, timeout=600)
+    err = result.stderr.replace(b"\r\n", b"\n")
+    lines = [line for line in err.split(b"\n")[:-1] if not line.startswith(b"==")]
+    try:
+        text = lines[0].decode("utf-8") if len(lines) == 1 else ""
+    except UnicodeDecodeError:
+        text = ""
+    safe = (len(lines) == 1 and err.endswith(b"\n") and text.startswith("aperture-render: ")
+            and all(b >= 0x20 for b in lines[0]) and len(text) <= 400 and escaped in text)
+    check(result.returncode == status and safe,
+          f"{what}: exit {status}, one safe line showing {escaped!r}"
+          + ("" if result.returncode == status and safe
+             else f" (exit {result.returncode}, stderr {result.stderr[:600]!r})"))
+
+
+bunny_obj = open(bunny, "rb").read()
+faces = bunny_obj.index(b"\nf ") + 1
+for what, line, escaped in (
+        ("an ESC sequence", b"f 1 2 \x1b]0;owned\x07\x1b[2J\n", r"\x1b]0;owned\x07"),
+        ("invalid UTF-8", b"f 1 \xff\xfe\xc0\xaf 3\n", r"\xff\xfe\xc0\xaf"),
+        ("a NUL", b"f 1 \x00\x1b[2J 3\n", "hostile.obj"),
+        ("a right-to-left override", b"f 1 2 3\xe2\x80\xae/cod.exe\n", r"\u202e"),
+        ("a 1 MB line", b"f 1 2 3 " + b"\x1b[31m" * 200000 + b"\n", r"\x1b[31m")):
+    expect_safe_failure(f"OBJ with {what}",
+                        [write_bytes("hostile.obj", bunny_obj[:faces] + line + bunny_obj[faces:]),
+                         "-o", path("x.png")], 1, escaped)
+expect_safe_failure("PLY with an ESC in its format word",
+                    [write_bytes("hostile.ply", late_format.replace(
+                        b"format ascii 1.0 extra\n", b"").replace(
+                        b"ply\n", b"ply\nformat \x1b[8mascii 1.0\n")), "-o", path("x.png")],
+                    1, "hostile.ply")
+hostile_name = "evil\x1b[2J\nname\x07"
+hostile_escaped = r"evil\x1b[2J\x0aname\x07"
+expect_safe_failure("a file name holding ESC, a newline and BEL",
+                    [write_bytes(hostile_name + ".tif", b"II*\0garbage"), "-o", path("x.png")],
+                    1, hostile_escaped)
+expect_safe_failure("a missing environment of such a name",
+                    [bunny, *FAST, "--env", path(hostile_name + ".exr"), "-o", path("x.png")],
+                    1, hostile_escaped)
+expect_safe_failure("an unknown option holding ESC", ["--\x1b[2Jfrobnicate", "-o", path("x.png")],
+                    2, r"--\x1b[2Jfrobnicate")
+
 for args, words in (
         (["--sun", "30,abc"], "--sun '30,abc'"),
         (["--sun", "30"], "AZIMUTH,ELEVATION"),

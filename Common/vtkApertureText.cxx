@@ -1,0 +1,195 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    vtkApertureText.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkApertureText.h"
+
+#include <cstdint>
+#include <cstdio>
+#include <vector>
+
+namespace
+{
+const char* const Ellipsis = "\xe2\x80\xa6"; // U+2026
+
+// How many bytes a UTF-8 sequence that starts with `lead` has; 0 for a byte that starts none
+// (continuation bytes, the overlong leads 0xc0 and 0xc1, leads beyond U+10FFFF).
+std::size_t SequenceLength(unsigned char lead)
+{
+  if (lead < 0x80)
+  {
+    return 1;
+  }
+  if (lead >= 0xc2 && lead < 0xe0)
+  {
+    return 2;
+  }
+  if (lead >= 0xe0 && lead < 0xf0)
+  {
+    return 3;
+  }
+  return lead >= 0xf0 && lead < 0xf5 ? 4 : 0;
+}
+
+// The code point of the valid UTF-8 sequence at text[at], and its length in bytes; a length of 0
+// when the bytes there are not one (a bad lead or continuation byte, an overlong form, a
+// surrogate, beyond U+10FFFF, cut off by the end).
+std::uint32_t Decode(const std::string& text, std::size_t at, std::size_t& length)
+{
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[at + k]); };
+  const unsigned char lead = byte(0);
+  length = SequenceLength(lead);
+  if (length == 0 || at + length > text.size())
+  {
+    length = 0;
+    return 0;
+  }
+  static const unsigned char leadMask[5] = { 0, 0x7f, 0x1f, 0x0f, 0x07 };
+  std::uint32_t code = lead & leadMask[length];
+  for (std::size_t k = 1; k < length; ++k)
+  {
+    if ((byte(k) & 0xc0) != 0x80)
+    {
+      length = 0;
+      return 0;
+    }
+    code = (code << 6) | (byte(k) & 0x3f);
+  }
+  static const std::uint32_t least[5] = { 0, 0, 0x80, 0x800, 0x10000 };
+  if (code < least[length] || code > 0x10ffff || (code >= 0xd800 && code <= 0xdfff))
+  {
+    length = 0;
+    return 0;
+  }
+  return code;
+}
+
+// Characters a terminal acts on or that change how the text around them reads: C0 and C1
+// controls, DEL, bidirectional marks, embeddings, overrides and isolates, line separators.
+bool IsControl(std::uint32_t code)
+{
+  return code < 0x20 || (code >= 0x7f && code <= 0x9f) || code == 0x200e || code == 0x200f ||
+    (code >= 0x2028 && code <= 0x202e) || (code >= 0x2066 && code <= 0x2069);
+}
+
+std::string Hex(const char* format, unsigned value)
+{
+  char buffer[8];
+  std::snprintf(buffer, sizeof(buffer), format, value);
+  return buffer;
+}
+
+// The text as the pieces it is shown as: one per character kept, one per escape.
+std::vector<std::string> Pieces(const std::string& text, bool doubleBackslash)
+{
+  std::vector<std::string> pieces;
+  pieces.reserve(text.size());
+  for (std::size_t at = 0; at < text.size();)
+  {
+    std::size_t length = 0;
+    const std::uint32_t code = Decode(text, at, length);
+    if (length == 0 || (length == 1 && IsControl(code)))
+    {
+      pieces.push_back(Hex("\\x%02x", static_cast<unsigned char>(text[at])));
+      ++at;
+      continue;
+    }
+    if (IsControl(code))
+    {
+      pieces.push_back(Hex("\\u%04x", code));
+    }
+    else if (code == '\\' && doubleBackslash)
+    {
+      pieces.push_back("\\\\");
+    }
+    else
+    {
+      pieces.push_back(text.substr(at, length));
+    }
+    at += length;
+  }
+  return pieces;
+}
+
+// A piece's width on the screen, in characters.
+std::size_t Width(const std::string& piece)
+{
+  const auto lead = static_cast<unsigned char>(piece[0]);
+  return lead >= 0x80 ? 1 : piece.size();
+}
+
+// The first pieces that fit in `maximumLength` characters, with `…` when some are left out.
+std::string Head(const std::vector<std::string>& pieces, std::size_t maximumLength)
+{
+  std::string result;
+  std::size_t width = 0;
+  for (std::size_t k = 0; k < pieces.size(); ++k)
+  {
+    width += Width(pieces[k]);
+    if (width > maximumLength)
+    {
+      return result + Ellipsis;
+    }
+    result += pieces[k];
+  }
+  return result;
+}
+
+// The last pieces that fit in `maximumLength` characters, after `…` when some are left out.
+std::string Tail(const std::vector<std::string>& pieces, std::size_t maximumLength)
+{
+  std::size_t width = 0;
+  std::size_t first = pieces.size();
+  while (first > 0 && width + Width(pieces[first - 1]) <= maximumLength)
+  {
+    width += Width(pieces[--first]);
+  }
+  std::string result = first > 0 ? Ellipsis : "";
+  for (std::size_t k = first; k < pieces.size(); ++k)
+  {
+    result += pieces[k];
+  }
+  return result;
+}
+}
+
+std::string vtkApertureText::Escape(const std::string& text, std::size_t maximumLength)
+{
+  return Head(Pieces(text, true), maximumLength);
+}
+
+std::string vtkApertureText::Quote(const std::string& text, std::size_t maximumLength)
+{
+  return "'" + Escape(text, maximumLength) + "'";
+}
+
+std::string vtkApertureText::QuoteName(const std::string& name, std::size_t maximumLength)
+{
+  return "'" + Tail(Pieces(name, true), maximumLength) + "'";
+}
+
+std::string vtkApertureText::Line(const std::string& message, std::size_t maximumLength)
+{
+  return Head(Pieces(message, false), maximumLength);
+}
+
+bool vtkApertureText::IsSafe(const std::string& text)
+{
+  for (std::size_t at = 0; at < text.size();)
+  {
+    std::size_t length = 0;
+    const std::uint32_t code = Decode(text, at, length);
+    if (length == 0 || IsControl(code))
+    {
+      return false;
+    }
+    at += length;
+  }
+  return true;
+}
