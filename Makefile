@@ -51,6 +51,8 @@ pictures: build
 	  --cache $(BUILD_DIR)/demo/fuji-apertures.vti
 	@$(RENDER) -o docs/images/fuji-apertures.png --show apertures --size 800x500 \
 	  --cache $(BUILD_DIR)/demo/fuji-apertures.vti
+	@$(RENDER) Testing/Data/stanford-bunny.obj -o docs/images/bunny-default.png --size 640x480 \
+	  --cache $(BUILD_DIR)/demo/bunny-apertures.vtp > /dev/null
 	@$(RENDER) Testing/Data/stanford-bunny.obj -o docs/images/bunny-modes.png --mode all \
 	  --size 360x330 --sphere-light -0.15,0.22,0.14,0.03 \
 	  --cache $(BUILD_DIR)/demo/bunny-apertures.vtp

@@ -368,7 +368,7 @@ void vtkAperturePrecompute::vtkRun::CollectOccluders(vtkInformationVector* occlu
   if (this->Distributed && !heightField)
   {
     this->RemoteOccluders = vtkApertureDistributedOccluders::Gather(
-      this->Self->Controller, local, this->Self->MaximumDistance);
+      this->Self->Controller, local, this->Self->SearchDistance());
     if (this->RemoteOccluders->GetNumberOfCells() > 0)
     {
       this->Occluders.push_back(this->RemoteOccluders);
@@ -406,7 +406,7 @@ bool vtkAperturePrecompute::vtkRun::SweepHorizons(const int extent[6])
   vtkHorizonHeightField::Settings settings;
   settings.HeightScale = self->HeightScale;
   settings.Sectors = self->NumberOfSectors;
-  settings.MaximumDistance = self->MaximumDistance;
+  settings.MaximumDistance = self->SearchDistance();
   settings.AmbientOcclusion = self->ComputeAmbientOcclusion;
   settings.BentNormalName = self->BentNormalArrayName.c_str();
   settings.RadiusName = self->ApertureRadiusArrayName.c_str();
@@ -535,9 +535,9 @@ bool vtkAperturePrecompute::vtkRun::Cast()
   vtkAperturePrecompute* self = this->Self;
   const vtkApertureRaySampler sampler(self->NumberOfRays, self->Seed, self->Sampling == RANDOM);
   const vtkIdType batch = std::max<vtkIdType>(64, (1 << 20) / self->NumberOfRays);
-  const float maximumDistance = self->MaximumDistance >= FLT_MAX
+  const float maximumDistance = self->SearchDistance() >= FLT_MAX
     ? std::numeric_limits<float>::infinity()
-    : static_cast<float>(self->MaximumDistance);
+    : static_cast<float>(self->SearchDistance());
   vtkIdType casting = 0;
   for (const auto& r : this->Receivers)
   {
@@ -753,7 +753,7 @@ int vtkAperturePrecompute::RequestUpdateExtent(
     return 1;
   }
   const int halo =
-    vtkHorizonHeightField::Halo(this->MaximumDistance, inInfo->Get(vtkDataObject::SPACING()));
+    vtkHorizonHeightField::Halo(this->SearchDistance(), inInfo->Get(vtkDataObject::SPACING()));
   for (int k = 0; k < 6; ++k)
   {
     const bool grows = k < 4 && halo >= 0;
@@ -835,11 +835,18 @@ int vtkAperturePrecompute::RequestData(
 }
 
 //------------------------------------------------------------------------------
+double vtkAperturePrecompute::SearchDistance() const
+{
+  return this->LimitDistance ? this->MaximumDistance : VTK_DOUBLE_MAX;
+}
+
+//------------------------------------------------------------------------------
 void vtkAperturePrecompute::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   static const char* const structures[] = { "Automatic", "Compact", "Fast" };
   os << indent << "NumberOfRays: " << this->NumberOfRays << "\n";
+  os << indent << "LimitDistance: " << (this->LimitDistance ? "On" : "Off") << "\n";
   os << indent << "MaximumDistance: " << this->MaximumDistance << "\n";
   os << indent << "RayOffset: " << this->RayOffset << "\n";
   os << indent << "Seed: " << this->Seed << "\n";

@@ -59,7 +59,8 @@
  * hemisphere's solid angle, shifted per point by a Cranley-Patterson rotation derived from Seed
  * and the point's position (SetSamplingToRandom() draws independent uniform samples instead, for
  * comparison). Rays start RayOffset × (mean length of the point's edges) above the point along its
- * normal, at least far enough to clear single-precision rounding, and stop at MaximumDistance.
+ * normal, at least far enough to clear single-precision rounding, and stop at MaximumDistance
+ * when LimitDistance is on.
  * Geometry is translated to a local origin before it reaches Embree, so UTM-sized coordinates
  * (1e5 to 1e7) keep their precision.
  *
@@ -111,7 +112,19 @@ public:
 
   ///@{
   /**
-   * Rays ignore geometry farther than this (world units), for local occlusion. Default: no limit.
+   * Whether visibility is searched only up to MaximumDistance: rays stop there and horizons
+   * ignore the ground beyond, for local occlusion (and so that a height field streams in tiles
+   * of bounded overlap). Default off: occluders count however far they are.
+   */
+  vtkSetMacro(LimitDistance, bool);
+  vtkGetMacro(LimitDistance, bool);
+  vtkBooleanMacro(LimitDistance, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The distance (world units) visibility is searched to when LimitDistance is on; ignored when
+   * it is off. Default VTK_DOUBLE_MAX.
    */
   vtkSetClampMacro(MaximumDistance, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(MaximumDistance, double);
@@ -279,10 +292,10 @@ public:
    * The controller of a distributed run (default: the global one). When the update asks for one
    * of several pieces and the controller has several processes, the filter gathers every other
    * rank's polygons and strips as occluders (only those within MaximumDistance of this rank's
-   * bounds when it is finite), so that each piece gets the serial answer; every rank must then
-   * update the filter, and an empty piece gives an empty output. Height-field pieces need no
+   * bounds when LimitDistance is on), so that each piece gets the serial answer; every rank must
+   * then update the filter, and an empty piece gives an empty output. Height-field pieces need no
    * gathering: the filter makes a piece's extent (a block of the grid) and asks its input for it
-   * grown by MaximumDistance (all of the grid when that is unlimited).
+   * grown by MaximumDistance (all of the grid when LimitDistance is off).
    */
   virtual void SetController(vtkMultiProcessController* controller);
   vtkGetObjectMacro(Controller, vtkMultiProcessController);
@@ -300,6 +313,7 @@ protected:
     vtkInformationVector* outputVector) override;
 
   int NumberOfRays = 256;
+  bool LimitDistance = false;
   double MaximumDistance = VTK_DOUBLE_MAX;
   double RayOffset = 0.001;
   int Seed = 0;
@@ -321,6 +335,8 @@ protected:
 
 private:
   vtkAperturePrecompute(const vtkAperturePrecompute&) = delete;
+  // MaximumDistance when LimitDistance is on, else VTK_DOUBLE_MAX.
+  double SearchDistance() const;
   void operator=(const vtkAperturePrecompute&) = delete;
 
   class vtkRun; // the steps of one RequestData

@@ -15,6 +15,7 @@
 #include "vtkMath.h"
 #include "vtkPolyData.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <vector>
@@ -97,6 +98,14 @@ std::string AxisName(int axis, double sign)
 }
 }
 
+std::string CompassName(double azimuth)
+{
+  static const char* const names[] = { "N", "NNE", "NE", "ENE", "E", "ESE", "SE", "SSE", "S", "SSW",
+    "SW", "WSW", "W", "WNW", "NW", "NNW" };
+  const double turned = std::fmod(std::fmod(azimuth, 360.0) + 360.0 + 11.25, 360.0);
+  return names[std::min(15, static_cast<int>(turned / 22.5))];
+}
+
 void CompassOf(const std::string& up, double east[3], double north[3], double upward[3])
 {
   const int axis = up[1] - 'x';
@@ -112,7 +121,9 @@ void CompassOf(const std::string& up, double east[3], double north[3], double up
 MeshView ChooseView(vtkPolyData* mesh, const std::string& up)
 {
   const Faces faces = FacesOf(mesh);
-  MeshView view{ up.empty() ? "+y" : up, 180.0 };
+  MeshView view{ up.empty() ? "+y" : up, 180.0,
+    up.empty() ? "no flat base found, so +y, the OBJ convention; --up +z for z-up scans and CAD"
+               : "given with --up" };
   if (up.empty())
   {
     // A flat base of at least 0.5% of the area, in the order y, z, x of conventions.
@@ -126,6 +137,7 @@ MeshView ChooseView(vtkPolyData* mesh, const std::string& up)
         {
           best = area;
           view.Up = AxisName(axis, sign);
+          view.UpReason = "opposite the flat base it stands on; --up to change";
         }
       }
     }
@@ -154,8 +166,9 @@ MeshView ChooseView(vtkPolyData* mesh, const std::string& up)
   double east[3], north[3], upward[3], eye[3] = { 0.0, 0.0, 0.0 };
   CompassOf(view.Up, east, north, upward);
   eye[along] = sign;
-  view.Azimuth =
-    vtkMath::DegreesFromRadians(std::atan2(vtkMath::Dot(eye, east), vtkMath::Dot(eye, north)));
+  view.Azimuth = std::fmod(360.0 +
+      vtkMath::DegreesFromRadians(std::atan2(vtkMath::Dot(eye, east), vtkMath::Dot(eye, north))),
+    360.0);
   return view;
 }
 }

@@ -21,15 +21,20 @@ namespace ApertureRender
 {
 struct MeshView
 {
-  std::string Up; // "+x" ... "-z"
-  double Azimuth; // compass azimuth of the eye, degrees (see View::Direction)
+  std::string Up;       // "+x" ... "-z"
+  double Azimuth;       // compass azimuth of the eye, degrees (see View::Direction)
+  std::string UpReason; // why Up, for the line that describes the view
 };
 
 // The up axis (`up`, or when empty the axis opposite a flat base at the bottom, else +y, the
 // convention of OBJ files and ParaView) and an eye along the mesh's thinner horizontal axis, so
 // that its broad side faces the camera: on the side its surface faces most (the front of an
-// open scan), else on the conventional front (+z with y up, -y with z up).
+// open scan), else on the conventional front (+z with y up, -y with z up). No shape rule tells a
+// lying figure from a standing one, so without a base the reason says how to change the guess.
 MeshView ChooseView(vtkPolyData* mesh, const std::string& up);
+
+// The 16-point compass name of an azimuth in degrees: "N", "NNE", ... "NNW".
+std::string CompassName(double azimuth);
 
 // The unit east, north and up vectors of an up axis: east x north = up, east +x unless up is
 // along x.

@@ -223,6 +223,11 @@ int ParseOptions(int argc, char* argv[], Options& options, std::string& error)
   }
   for (const std::string& sun : suns)
   {
+    if (sun == "none")
+    {
+      options.NoSun = true;
+      continue;
+    }
     if (!ToNumbers(sun, 2, 3, numbers) || numbers[1] < -90.0 || numbers[1] > 90.0 ||
       (numbers.size() == 3 && (numbers[2] < 0.0 || numbers[2] > 90.0)))
     {
@@ -433,9 +438,12 @@ Output:
 Lights and shading:
   --sun AZ,EL[,R]        a sun at compass azimuth AZ (0 north, 90 east) and elevation EL above
                          the horizon, angular radius R (default 0.27, the real sun), in degrees;
-                         repeatable. Default (unless --sphere-light or --env is given): one sun,
-                         low in the west-north-west (AZ 285, EL 16) for height fields; upper
-                         left, in front, for meshes (AZ 225, EL 45)
+                         repeatable; --sun none: no sun (the sky or --env alone). Default
+                         (unless --sphere-light or --env is given): one sun, for meshes over
+                         the viewer's shoulder (45 deg to the left of the eye's azimuth, 30 deg
+                         above the eye, so it follows --azimuth and --elevation); for height
+                         fields low in the west-north-west (AZ 285, EL 16), the terrain
+                         convention, lighting the default view from its left
   --sphere-light X,Y,Z,R[,I]
                          a sphere light of radius R at (X, Y, Z) in data coordinates, intensity I
                          (default 1: the light an unoccluded surface facing it receives);
@@ -466,12 +474,15 @@ Lights and shading:
                          casting rays; a cache made for other data is recomputed and replaced
 
 View:
-  --azimuth DEG          compass azimuth of the eye seen from the data (default 195, from the
-                         south-south-west, for height fields; 180, the front, for meshes)
+  --azimuth DEG          compass azimuth of the eye seen from the data (default: 200, from the
+                         south-south-west, for height fields; for meshes, along the thinner
+                         horizontal axis from the side the surface faces most; the run prints
+                         the view it chose)
   --elevation DEG        elevation of the eye (default 28 for height fields, 15 for meshes)
   --zoom F               magnify by F (default 1)
-  --up AXIS              the data's up axis: +x -x +y -y +z -z (default +z for height fields,
-                         +y for meshes); azimuths and elevations are measured around it
+  --up AXIS              the data's up axis: +x -x +y -y +z -z (default +z for height fields;
+                         for meshes, the axis opposite a flat base, else +y, the OBJ
+                         convention); azimuths and elevations are measured around it
   --background R,G,B     background colour, 0 to 1 (default 0.09,0.1,0.12)
 
 Height fields:

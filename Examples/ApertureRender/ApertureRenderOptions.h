@@ -42,6 +42,7 @@ struct Options
   std::string Mode = "exact"; // a shading mode, or "all" for a row of every mode
   bool ShowApertures = false; // colour by the aperture radius instead of shading
   std::vector<Sun> Suns;
+  bool NoSun = false; // --sun none: not even the default sun
   std::vector<SphereLight> SphereLights;
   double Sky[3] = { 0.24, 0.27, 0.34 };
   bool SkyGiven = false;
@@ -63,7 +64,7 @@ struct Options
   double CameraAzimuth;
   double CameraElevation;
   double Zoom = 1.0;
-  std::string Up; // "+x" ... "-z"; empty: +z for height fields, +y for meshes
+  std::string Up; // "+x" ... "-z"; empty: +z for height fields, see ChooseView for meshes
   // Height fields: ground spacing (0: from the file, else 30 m) and vertical scale (0: 1, or 1.5
   // for the embedded tile).
   double Spacing = 0.0;

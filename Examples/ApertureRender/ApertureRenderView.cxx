@@ -177,11 +177,13 @@ View::View(const Options& options, const Input& input, vtkDataObject* apertures)
     this->Center[k] = bounds[0] <= bounds[1] ? 0.5 * (bounds[2 * k] + bounds[2 * k + 1]) : 0.0;
   }
   // Height fields rise along +z and are seen from the south-south-west; meshes, see ChooseView.
-  const MeshView chosen = this->HeightField
-    ? MeshView{ options.Up.empty() ? "+z" : options.Up, 200.0 }
-    : ChooseView(this->Drawn, options.Up);
+  const MeshView chosen = this->HeightField ? MeshView{ options.Up.empty() ? "+z" : options.Up,
+    200.0, options.Up.empty() ? "height field" : "given with --up" }
+                                            : ChooseView(this->Drawn, options.Up);
   CompassOf(chosen.Up, this->East, this->North, this->Up);
   this->DefaultAzimuth = chosen.Azimuth;
+  this->UpName = chosen.Up;
+  this->UpReason = chosen.UpReason;
 
   this->Mapper->SetInputData(this->Drawn);
   this->Mapper->SetShadingMode(this->Mode);
@@ -329,11 +331,21 @@ void View::Direction(double azimuth, double elevation, double direction[3]) cons
 void View::AddLights()
 {
   this->SunAngles = this->Settings.Suns;
-  if (this->SunAngles.empty() && this->Settings.SphereLights.empty() &&
-    this->Settings.Environment.empty())
+  this->DefaultSun = this->SunAngles.empty() && !this->Settings.NoSun &&
+    this->Settings.SphereLights.empty() && this->Settings.Environment.empty();
+  if (this->DefaultSun && this->HeightField)
   {
-    this->SunAngles.push_back(
-      this->HeightField ? Sun{ 285.0, 16.0, 0.27 } : Sun{ 225.0, 45.0, 0.27 });
+    // The terrain convention: low from the west-north-west, the default view's left.
+    this->SunAngles.push_back(Sun{ 285.0, 16.0, 0.27 });
+  }
+  else if (this->DefaultSun)
+  {
+    // A key light over the viewer's left shoulder, wherever the eye is: the side the camera
+    // sees is lit and the shadows fall where it sees them.
+    double azimuth, elevation;
+    this->EyeAngles(azimuth, elevation);
+    this->SunAngles.push_back(Sun{ std::fmod(std::fmod(azimuth + 45.0, 360.0) + 360.0, 360.0),
+      std::min(85.0, std::max(-85.0, elevation + 30.0)), 0.27 });
   }
   for (const Sun& angles : this->SunAngles)
   {
@@ -379,14 +391,43 @@ void View::AddLights()
   }
 }
 
+void View::EyeAngles(double& azimuth, double& elevation) const
+{
+  azimuth =
+    std::isnan(this->Settings.CameraAzimuth) ? this->DefaultAzimuth : this->Settings.CameraAzimuth;
+  elevation = std::isnan(this->Settings.CameraElevation) ? (this->HeightField ? 28.0 : 15.0)
+                                                         : this->Settings.CameraElevation;
+}
+
+std::string View::Description() const
+{
+  double azimuth, elevation;
+  this->EyeAngles(azimuth, elevation);
+  std::ostringstream line;
+  line << "view: eye from the " << CompassName(azimuth) << " (azimuth " << azimuth << ", "
+       << elevation << " deg up), up " << this->UpName << " (" << this->UpReason << "); ";
+  if (this->SunAngles.empty())
+  {
+    line << "no sun";
+  }
+  else
+  {
+    const Sun& sun = this->SunAngles[0];
+    line << "sun from the " << CompassName(sun.Azimuth) << " (azimuth " << sun.Azimuth << ", "
+         << sun.Elevation << " deg up, "
+         << (!this->DefaultSun      ? "given"
+                : this->HeightField ? "the terrain default"
+                                    : "over the viewer's left shoulder")
+         << "; --sun to place it)";
+  }
+  return line.str();
+}
+
 void View::PlaceCamera()
 {
   const bool field = this->HeightField;
-  const double azimuth =
-    std::isnan(this->Settings.CameraAzimuth) ? this->DefaultAzimuth : this->Settings.CameraAzimuth;
-  const double elevation = std::isnan(this->Settings.CameraElevation)
-    ? (field ? 28.0 : 15.0)
-    : this->Settings.CameraElevation;
+  double azimuth, elevation;
+  this->EyeAngles(azimuth, elevation);
   double d[3];
   this->Direction(azimuth, elevation, d);
   vtkCamera* camera = this->Renderer->GetActiveCamera();

@@ -63,12 +63,18 @@ public:
   // Runs the window until the user closes it.
   void Interact();
 
+  // One line saying where the eye, the up axis and the sun are, and why: "view: eye from the E
+  // (azimuth 90, 15 deg up), up +y (...); sun ...".
+  std::string Description() const;
+
 private:
   // Stops that show the environment well: see --env-exposure.
   double AutomaticExposure() const;
   // Turns the environment to a compass azimuth about the data's up axis.
   void TurnEnvironment(double azimuth);
   void Direction(double azimuth, double elevation, double direction[3]) const;
+  // The eye's compass azimuth and elevation: the options', else the default view's.
+  void EyeAngles(double& azimuth, double& elevation) const;
   void AddLights();
   void PlaceCamera();
   void SetMode(int mode);
@@ -84,6 +90,8 @@ private:
   vtkSmartPointer<vtkPolyData> Surface;
   vtkSmartPointer<vtkPolyData> Drawn; // Surface without cells that use points not finite
   double DefaultAzimuth = 180.0;
+  std::string UpName, UpReason; // the up axis and why it was chosen
+  bool DefaultSun = false;      // the sun was placed by the view, not given
   double Center[3];
   double East[3], North[3], Up[3];
   int Mode = 0;

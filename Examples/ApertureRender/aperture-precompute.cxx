@@ -49,8 +49,9 @@ AmbientOcclusion. No-data texels are NaN.
 
 options:
   -o, --output FILE      the GeoTIFF to write (required)
-  --max-distance M       horizon search radius in metres (default: none, the whole DEM). With a
-                         radius the DEM is read and computed in tiles, in bounded memory
+  --max-distance M       limit the horizon search to M metres (default: none, the whole DEM;
+                         also --max-distance none). With a limit the DEM is read and computed
+                         in tiles, in bounded memory
   --sectors D            azimuth sectors, 4 to 1024 (default 32)
   --tile-size N          tiles of N x N texels with --max-distance (default 5120)
   --vertical-scale S     factor from the DEM's height unit to metres (default 1; 0.3048: feet)
@@ -66,7 +67,7 @@ examples:
 struct Options
 {
   std::string Input, Output;
-  double MaximumDistance = 0.0;
+  double MaximumDistance = 0.0; // 0: no limit
   int Sectors = 32;
   int TileSize = 5120;
   double VerticalScale = 1.0;
@@ -119,6 +120,11 @@ bool Parse(const std::vector<std::string>& args, Options& o, int& status)
         return Fail(a + " needs a file name", status, 2);
       }
       o.Output = args[k];
+    }
+    else if (a == "--max-distance" && k + 1 < args.size() && args[k + 1] == "none")
+    {
+      o.MaximumDistance = 0.0;
+      ++k;
     }
     else if (a == "--max-distance" || a == "--vertical-scale")
     {
@@ -188,6 +194,7 @@ int main(int argc, char* argv[])
   filter->ComputeAmbientOcclusionOn();
   if (o.MaximumDistance > 0.0)
   {
+    filter->LimitDistanceOn();
     filter->SetMaximumDistance(o.MaximumDistance);
   }
   // Tiles when the search radius leaves room for them (each tile reads its radius around it).

@@ -224,6 +224,7 @@ int main(int argc, char* argv[])
   {
     return Fail(error, 1);
   }
+  Say(view.Description());
   if (!options.SaveData.empty())
   {
     if (!view.WriteData(options.SaveData, messages, error))

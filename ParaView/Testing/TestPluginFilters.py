@@ -100,6 +100,23 @@ def main(plugin, data, work):
               f"DEM: the valley floor's aperture {floor:.4f} is pi/2 - atan(slope) = "
               f"{expected:.4f} (+-0.03)")
 
+    # Limit Distance: off by default (every occluder counts); the distance it offers is a
+    # quarter of the data's size, not 1e30; on, with a radius shorter than a texel (10 m), the
+    # valley floor sees no wall.
+    # (As in the GUI, the input has data when the filter is made: the domain reads its bounds.)
+    width = n * 10.0
+    dem.UpdatePipeline()
+    fresh = pvs.AperturePrecompute(Input=dem)
+    check(fresh.LimitDistance == 0 and 0.2 * width < fresh.MaximumDistance < 0.3 * width,
+          f"DEM: Limit Distance off, Maximum Distance offered {fresh.MaximumDistance} (about a "
+          f"quarter of the {width:.0f} m wide valley)")
+    local = pvs.AperturePrecompute(Input=dem, LimitDistance=1, MaximumDistance=5.0)
+    radius = point_array(local, "ApertureRadius")
+    if radius is not None:
+        floor = radius.reshape(n, n)[n // 2, n // 2]
+        check(floor > expected + 0.1,
+              f"DEM: limited to 5 m, the valley floor opens: {floor:.4f} > {expected:.4f}")
+
     # The Terrain-RGB tile.
     tile = pvs.TerrainRGBReader(FileName=os.path.join(data, "fuji-terrain-rgb.png"), Spacing=[30, 30])
     radius = point_array(pvs.AperturePrecompute(Input=tile), "ApertureRadius")

@@ -231,6 +231,7 @@ Batch Precompute(
     filter->SetMethodToHorizons();
     filter->SetNumberOfSectors(sectors);
     filter->ComputeAmbientOcclusionOn();
+    filter->LimitDistanceOn();
     filter->SetMaximumDistance(radius);
     vtkNew<vtkGDALGridWriter> writer;
     writer->SetInputConnection(filter->GetOutputPort());

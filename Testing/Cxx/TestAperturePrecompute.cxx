@@ -354,12 +354,16 @@ void TestMaximumDistance()
   filter->Update();
   const vtkIdType middle = 4; // (0, 0, 0) on the floor
   const double near = Array(filter->GetOutput(), "ApertureRadius")->GetTuple1(middle);
-  filter->SetMaximumDistance(1.5);
+  filter->SetMaximumDistance(1.5); // not applied until LimitDistance is on
+  filter->Update();
+  const double unlimited = Array(filter->GetOutput(), "ApertureRadius")->GetTuple1(middle);
+  filter->LimitDistanceOn();
   filter->Update();
   const double far = Array(filter->GetOutput(), "ApertureRadius")->GetTuple1(middle);
   std::cout << "Floor point 2 units from a wall: radius " << near
             << ", with MaximumDistance 1.5: " << far << "\n";
   Check(near < 0.5 * Pi - 0.1, "the wall occludes", near, 0.5 * Pi);
+  Check(unlimited == near, "MaximumDistance waits for LimitDistance", unlimited, near);
   Check(std::abs(far - 0.5 * Pi) < 1e-6, "rays stop before the wall", far, 0.5 * Pi);
 }
 

@@ -421,6 +421,7 @@ void TestTiledRoundTrip()
   reader->SetFileName(dem.c_str());
   vtkNew<vtkAperturePrecompute> whole;
   whole->SetInputConnection(reader->GetOutputPort());
+  whole->LimitDistanceOn();
   whole->SetMaximumDistance(150.0); // 5 texels of 30 m
   whole->ComputeAmbientOcclusionOn();
   whole->Update();
@@ -429,6 +430,7 @@ void TestTiledRoundTrip()
 
   vtkNew<vtkAperturePrecompute> tiled;
   tiled->SetInputConnection(reader->GetOutputPort());
+  tiled->LimitDistanceOn();
   tiled->SetMaximumDistance(150.0);
   tiled->ComputeAmbientOcclusionOn();
   ExtentSpy spy;

@@ -116,6 +116,7 @@ std::vector<vtkSmartPointer<vtkPolyData>> Run(
 {
   vtkNew<vtkAperturePrecompute> apertures;
   apertures->SetInputData(input);
+  apertures->LimitDistanceOn();
   apertures->SetMaximumDistance(distance);
   apertures->SetNumberOfRays(256);
   apertures->ComputeAmbientOcclusionOn();
@@ -279,10 +280,12 @@ bool DistributedHeightField(
   reader->SetSpacing(60.0, 60.0);
   vtkNew<vtkAperturePrecompute> whole;
   whole->SetInputConnection(reader->GetOutputPort());
+  whole->LimitDistanceOn();
   whole->SetMaximumDistance(distance);
   whole->Update();
   vtkNew<vtkAperturePrecompute> piece;
   piece->SetInputConnection(reader->GetOutputPort());
+  piece->LimitDistanceOn();
   piece->SetMaximumDistance(distance);
   piece->UpdatePiece(rank, controller->GetNumberOfProcesses(), 0);
   vtkImageData* expected = whole->GetImageDataOutput();

@@ -100,6 +100,14 @@ for rows in ("5", "37", "100000"):
     sums.append([b.get("checksum") for b in tiled["bands"]] if tiled else None)
 check(sums[0] is not None and sums[0] == sums[1] == sums[2],
       "tiles of 5 x 5, 37 x 37 and one piece: identical bands " + str(sums))
+whole_sums = [b.get("checksum") for b in gdalinfo(out, "-checksum")["bands"]]
+check(sums[0] != whole_sums, "a search radius of 1500 m changes the bands")
+result = run(dem, "-o", path("unlimited.tif"), "--sectors", "16", "--max-distance", "none",
+             "--quiet")
+unlimited = gdalinfo(path("unlimited.tif"), "-checksum")
+check(result.returncode == 0 and unlimited and
+      [b.get("checksum") for b in unlimited["bands"]] == whole_sums,
+      "--max-distance none: the bands of the run without a limit")
 
 # Progress and summary on a normal run.
 result = run(dem, "-o", path("summary.tif"), "--sectors", "8")

@@ -9,15 +9,16 @@ exactly one line on stderr that says what is wrong, never a crash.
 """
 
 import os
+import re
 import struct
 import subprocess
 import sys
 
 import numpy as np
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
-from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPolyData
-from vtkmodules.vtkFiltersCore import vtkDelaunay3D, vtkStripper
-from vtkmodules.vtkFiltersSources import vtkCubeSource
+from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPlane, vtkPolyData
+from vtkmodules.vtkFiltersCore import vtkClipPolyData, vtkDelaunay3D, vtkStripper
+from vtkmodules.vtkFiltersSources import vtkCubeSource, vtkSphereSource
 from vtkmodules.vtkIOGeometry import vtkOBJReader, vtkSTLWriter
 from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter, vtkTIFFWriter
 from vtkmodules.vtkIOLegacy import vtkPolyDataWriter, vtkUnstructuredGridWriter
@@ -538,7 +539,58 @@ expect_failure("environment that is not an EXR",
 expect_failure("no X display", [bunny, *FAST, "-o", path("x.png")], 1, "X display",
                env={k: v for k, v in os.environ.items() if k != "DISPLAY"})
 
-# Malformed command lines: exit 2.
+# The default sun follows the view. Half of a bumpy ellipsoid, open on the y-z plane, has no base
+# (so +y is up) and is thinnest along x: its outside faces east or west, and the camera looks
+# from there. Under the default sun the side it sees must be lit: at least half as bright as
+# under a headlight (a sun at the eye) and brighter than under the sky alone (--sun none).
+def open_shell(facing, name):
+    sphere = vtkSphereSource()
+    sphere.SetThetaResolution(72)
+    sphere.SetPhiResolution(48)
+    sphere.Update()
+    shell = sphere.GetOutput()
+    p = vtk_to_numpy(shell.GetPoints().GetData()).astype(float)
+    bump = 1.0 + 0.1 * np.sin(7 * np.arctan2(p[:, 1], p[:, 2])) * np.sin(9 * p[:, 1])
+    shell.GetPoints().SetData(numpy_to_vtk(p * bump[:, None] * [0.8, 2.0, 2.4], deep=True))
+    plane = vtkPlane()
+    plane.SetNormal(facing, 0.0, 0.0)
+    clip = vtkClipPolyData()
+    clip.SetInputData(shell)
+    clip.SetClipFunction(plane)
+    writer = vtkXMLPolyDataWriter()
+    writer.SetInputConnection(clip.GetOutputPort())
+    writer.SetFileName(path(name))
+    writer.Write()
+    return path(name)
+
+
+def surface_brightness(pictures):
+    """Mean luminance, in each picture, over the pixels where the first shows the surface."""
+    images = [read_png(p)[:, :, :3].astype(float) for p in pictures]
+    surface = np.abs(images[0] - images[0][0, 0]).sum(axis=2) > 12
+    return surface.mean(), [image.mean(axis=2)[surface].mean() for image in images]
+
+
+for facing, compass in ((1.0, "E"), (-1.0, "W")):
+    shell = open_shell(facing, f"shell-{compass}.vtp")
+    result = run(shell, *FAST, "-o", path(f"sun-default-{compass}.png"))
+    view = re.search(r"view: eye from the (\w+) \(azimuth ([-\d.e]+), ([-\d.e]+) deg up\)",
+                     result.stdout)
+    check(result.returncode == 0 and view is not None and view.group(1) == compass,
+          f"shell facing {compass}: the default view looks from the {compass} "
+          f"({view.group(0) if view else result.stdout + result.stderr})")
+    if not view:
+        continue
+    eye = f"{view.group(2)},{view.group(3)}"
+    for light, extra in (("headlight", ["--sun", eye]), ("sky", ["--sun", "none"])):
+        run(shell, *FAST, *extra, "-o", path(f"sun-{light}-{compass}.png"))
+    shown, (headlight, default, sky) = surface_brightness(
+        [path(f"sun-{light}-{compass}.png") for light in ("headlight", "default", "sky")])
+    check(shown > 0.1 and default >= 0.5 * headlight and default > 1.1 * sky,
+          f"shell facing {compass}: the side seen is lit by the default sun (mean {default:.1f} "
+          f">= half the headlight's {headlight:.1f}, > the sky's {sky:.1f}; surface "
+          f"{100 * shown:.0f}% of the picture)")
+
 # Hostile bytes: a message that quotes a file (or its name) must be safe to print as it is.
 def expect_safe_failure(what, args, status, escaped):
     """Refused with one line on stderr that is valid UTF-8, holds no byte below 0x20 but its
@@ -585,6 +637,7 @@ expect_safe_failure("a missing environment of such a name",
 expect_safe_failure("an unknown option holding ESC", ["--\x1b[2Jfrobnicate", "-o", path("x.png")],
                     2, r"--\x1b[2Jfrobnicate")
 
+# Malformed command lines: exit 2.
 for args, words in (
         (["--sun", "30,abc"], "--sun '30,abc'"),
         (["--sun", "30"], "AZIMUTH,ELEVATION"),
