@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
-"""Fails when a library function is longer than the limit (80 lines, header to closing brace).
+"""Fails when a function of the library or its tools is longer than the limit (80 lines, header
+to closing brace).
 
 Usage: CheckFunctionLength.py SOURCE_DIR [--limit N] [--list N]
 
-Reads the .cxx and .h files of the library folders (Common, Filters, IO, Rendering), with
+Reads the .cxx and .h files of the library folders (Common, Filters, IO, Rendering), the tools
+(Examples/ApertureRender), the fuzz targets and the ParaView plugin, with
 comments and literals blanked, and measures every function body that is not inside another
 function: free functions, methods defined out of line and those defined in class bodies.
 Lambdas count as part of the function that holds them. A function may be longer when a comment
@@ -16,7 +18,8 @@ import pathlib
 import re
 import sys
 
-FOLDERS = ("Common", "Filters", "IO", "Rendering")
+FOLDERS = ("Common", "Filters", "IO", "Rendering", "Examples/ApertureRender", "Testing/Fuzz",
+           "ParaView")
 REASON = "Longer than 80 lines:"
 CONTROL = re.compile(r"\b(if|for|while|switch|catch|do|else|try)\s*(\(|$)")
 FUNCTION_END = re.compile(r"\)\s*(const)?\s*(noexcept)?\s*(override|final)?\s*(->[^{]*)?$")

@@ -95,25 +95,19 @@ void ChooseMaximumEdge(const Options& options, Input& input)
   input.Notes.push_back(note.str());
 }
 
-// Checks a USGS DEM the way vtkDEMReader reads it, which would divide by zero on a grid
-// narrower than 100 columns and write outside its image for profiles that do not fit.
-bool CheckDEM(const std::string& name, std::string& error)
+// A USGS DEM's type A record as vtkDEMReader reads it: the grid's columns and rows (as
+// vtkDEMReader::ComputeExtentOriginAndSpacing finds them from the corners SW, NW, NE, SE and the
+// resolution) and the number of profiles; false when the record is incomplete or invalid.
+bool ReadDEMHeader(FILE* file, double& columns, double& rows, int& profiles)
 {
-  FILE* file = vtksys::SystemTools::Fopen(name, "rb");
-  if (!file)
-  {
-    error = vtkApertureText::QuoteName(name) + " cannot be read";
-    return false;
-  }
   char record[1025] = { 0 };
   const bool header = std::fread(record, 1, 1024, file) == 1024;
   for (char& c : record)
   {
     c = c == 'D' ? 'E' : c; // Fortran exponents
   }
-  int planeUnit = 0, elevationUnit = 0;
+  int planeUnit = 0, elevationUnit = 0, counts[2] = { 0, 0 };
   float corners[8] = { 0 }, resolution[3] = { 0 };
-  int profiles[2] = { 0, 0 };
   const bool fields = header &&
     std::sscanf(record + 528, "%6d%6d", &planeUnit, &elevationUnit) == 2 &&
     std::sscanf(record + 546, "%24g%24g%24g%24g%24g%24g%24g%24g", corners, corners + 1, corners + 2,
@@ -124,66 +118,84 @@ bool CheckDEM(const std::string& name, std::string& error)
     std::copy(record + 816 + 12 * k, record + 828 + 12 * k, buffer);
     std::sscanf(buffer, "%12g", resolution + k);
   }
-  const bool dimensions =
-    fields && std::sscanf(record + 852, "%6d%6d", profiles, profiles + 1) == 2;
-  if (!dimensions || !(resolution[0] > 0.0f) || !(resolution[1] > 0.0f) ||
-    !std::isfinite(resolution[0]) || !std::isfinite(resolution[1]))
+  if (!fields || std::sscanf(record + 852, "%6d%6d", counts, counts + 1) != 2 ||
+    !(resolution[0] > 0.0f) || !(resolution[1] > 0.0f) || !std::isfinite(resolution[0]) ||
+    !std::isfinite(resolution[1]))
   {
-    std::fclose(file);
-    error = vtkApertureText::QuoteName(name) +
-      " is not a USGS DEM (its type A record is incomplete or invalid)";
     return false;
   }
-  // As vtkDEMReader::ComputeExtentOriginAndSpacing: corners SW, NW, NE, SE.
   const float east = std::max(corners[4], corners[6]), west = std::min(corners[2], corners[0]);
   const float north = std::max(corners[5], corners[3]), south = std::min(corners[1], corners[7]);
-  const double columns = std::floor((east - west) / resolution[0] + 1.0);
-  const double rows = std::floor((north - south) / resolution[1] + 1.0);
-  if (!(columns >= 100 && rows >= 2 && columns * rows <= double(1 << 28)))
-  {
-    std::fclose(file);
-    std::ostringstream what;
-    what << vtkApertureText::QuoteName(name) << " is a DEM of " << columns << " x " << rows
-         << " samples; VTK's DEM reader needs 100 to 16384 columns and 2 or more rows";
-    error = what.str();
-    return false;
-  }
+  columns = std::floor((east - west) / resolution[0] + 1.0);
+  rows = std::floor((north - south) / resolution[1] + 1.0);
+  profiles = counts[1];
+  return true;
+}
+
+// The profiles after the header: each inside the grid and complete; "" or what is wrong.
+std::string CheckDEMProfiles(FILE* file, double columns, double rows, int profiles)
+{
   std::fseek(file, 1024, SEEK_SET);
-  for (int column = 0; column < profiles[1]; ++column)
+  for (int column = 0; column < profiles; ++column)
   {
     int id[2], size[2];
-    char header2[121];
+    char header[121];
     if (std::fscanf(file, "%6d%6d%6d%6d", id, id + 1, size, size + 1) == EOF)
     {
       break;
     }
-    if (std::fscanf(file, "%120c", header2) != 1)
+    if (std::fscanf(file, "%120c", header) != 1)
     {
-      std::fclose(file);
-      error = vtkApertureText::QuoteName(name) + " is truncated (a profile header is cut off)";
-      return false;
+      return " is truncated (a profile header is cut off)";
     }
     const double row = id[0] - 1.0, col = id[1] - 1.0, last = row + size[0] - 1.0;
     if (col < 0 || col >= columns || row < 0 || last >= rows)
     {
-      std::fclose(file);
-      error = vtkApertureText::QuoteName(name) +
-        " is damaged (a profile lies outside the grid its header declares)";
-      return false;
+      return " is damaged (a profile lies outside the grid its header declares)";
     }
     int value;
     for (int k = 0; k < size[0]; ++k)
     {
       if (std::fscanf(file, "%6d", &value) != 1)
       {
-        std::fclose(file);
-        error = vtkApertureText::QuoteName(name) + " is truncated (a profile ends early)";
-        return false;
+        return " is truncated (a profile ends early)";
       }
     }
   }
+  return "";
+}
+
+// Checks a USGS DEM the way vtkDEMReader reads it, which would divide by zero on a grid
+// narrower than 100 columns and write outside its image for profiles that do not fit.
+bool CheckDEM(const std::string& name, std::string& error)
+{
+  FILE* file = vtksys::SystemTools::Fopen(name, "rb");
+  if (!file)
+  {
+    error = vtkApertureText::QuoteName(name) + " cannot be read";
+    return false;
+  }
+  double columns = 0.0, rows = 0.0;
+  int profiles = 0;
+  std::string problem;
+  if (!ReadDEMHeader(file, columns, rows, profiles))
+  {
+    problem = " is not a USGS DEM (its type A record is incomplete or invalid)";
+  }
+  else if (!(columns >= 100 && rows >= 2 && columns * rows <= double(1 << 28)))
+  {
+    std::ostringstream what;
+    what << " is a DEM of " << columns << " x " << rows
+         << " samples; VTK's DEM reader needs 100 to 16384 columns and 2 or more rows";
+    problem = what.str();
+  }
+  else
+  {
+    problem = CheckDEMProfiles(file, columns, rows, profiles);
+  }
   std::fclose(file);
-  return true;
+  error = problem.empty() ? "" : vtkApertureText::QuoteName(name) + problem;
+  return problem.empty();
 }
 
 // Extensions read as single-band DEMs through GDAL.
@@ -211,128 +223,166 @@ vtkSmartPointer<vtkImageData> AsHeights(vtkImageData* image)
   return heights;
 }
 
+// A PNG's heights: Terrain-RGB when it has colour, else grey heights `spacing` apart.
+vtkSmartPointer<vtkImageData> ReadPNGHeights(
+  const std::string& name, double spacing, std::string& kind, std::string& error)
+{
+  error = vtkPNGValidator::CheckFile(name.c_str());
+  if (!error.empty())
+  {
+    return nullptr;
+  }
+  vtkNew<vtkPNGReader> png;
+  png->SetFileName(name.c_str());
+  png->UpdateInformation();
+  if (png->GetNumberOfScalarComponents() >= 3 && png->GetDataScalarType() == VTK_UNSIGNED_CHAR)
+  {
+    vtkNew<vtkTerrainRGBReader> terrain;
+    terrain->SetFileName(name.c_str());
+    terrain->SetSpacing(spacing, spacing);
+    terrain->Update();
+    kind = "Terrain-RGB";
+    return terrain->GetOutput();
+  }
+  png->Update();
+  kind = png->GetDataScalarType() == VTK_UNSIGNED_SHORT ? "16-bit grey" : "8-bit grey";
+  vtkSmartPointer<vtkImageData> image = AsHeights(png->GetOutput());
+  image->SetSpacing(spacing, spacing, 1.0);
+  return image;
+}
+
+// A single-band raster through GDAL, spaced by its georeferencing unless --spacing is given.
+vtkSmartPointer<vtkImageData> ReadGDALHeights(const std::string& name, const std::string& extension,
+  const Options& options, MessageCapture& messages, Input& input, std::string& kind,
+  std::string& error)
+{
+  vtkNew<vtkGDALDEMReader> raster;
+  raster->SetFileName(name.c_str());
+  raster->Update();
+  if (!messages.FirstError().empty())
+  {
+    error = "cannot read " + vtkApertureText::QuoteName(name) + ": " + messages.FirstError();
+    return nullptr;
+  }
+  vtkSmartPointer<vtkImageData> image = raster->GetOutput();
+  const bool georeferenced = raster->GetGeoreferenced();
+  if (options.Spacing > 0.0 || !georeferenced)
+  {
+    const double spacing = options.Spacing > 0.0 ? options.Spacing : 30.0;
+    image->SetSpacing(spacing, spacing, 1.0);
+  }
+  else
+  {
+    input.Notes.push_back(std::string("ground spacing: ") + raster->GetGroundSpacingNote());
+  }
+  const bool tiff = extension == ".tif" || extension == ".tiff";
+  kind = tiff ? (georeferenced ? "GeoTIFF" : "TIFF") : "GDAL raster (" + extension + ")";
+  return image;
+}
+
+// A USGS DEM, checked before VTK's reader reads it.
+vtkSmartPointer<vtkImageData> ReadUSGSHeights(
+  const std::string& name, const Options& options, std::string& kind, std::string& error)
+{
+  if (!CheckDEM(name, error))
+  {
+    return nullptr;
+  }
+  vtkNew<vtkDEMReader> dem;
+  dem->SetFileName(name.c_str());
+  dem->SetElevationReferenceToSeaLevel();
+  dem->Update();
+  vtkSmartPointer<vtkImageData> image = AsHeights(dem->GetOutput());
+  if (options.Spacing > 0.0)
+  {
+    image->SetSpacing(options.Spacing, options.Spacing, 1.0);
+  }
+  kind = "USGS DEM";
+  return image;
+}
+
+// An SRTM tile's spacing: samples 3600/(N-1) arc-seconds apart, east-west shrinking with the
+// latitude its name gives (N35E138.hgt: 35 to 36 degrees north); --spacing overrides both.
+void SetSRTMSpacing(
+  vtkImageData* image, const std::string& name, int side, const Options& options, Input& input)
+{
+  const double arcSeconds = 3600.0 / (side - 1);
+  double latitude = 0.0;
+  std::smatch match;
+  const std::string base = vtksys::SystemTools::GetFilenameName(name);
+  if (std::regex_search(base, match, std::regex("^([NSns])([0-9]{1,2})[EWew][0-9]{1,3}")))
+  {
+    latitude = std::stod(match[2]) + 0.5;
+    latitude = (match[1] == "S" || match[1] == "s") ? -latitude : latitude;
+  }
+  else
+  {
+    input.Notes.push_back("the tile's name gives no latitude: east-west spacing as at the equator");
+  }
+  const double dy = options.Spacing > 0.0 ? options.Spacing : arcSeconds * MetresPerArcSecond;
+  const double dx =
+    options.Spacing > 0.0 ? options.Spacing : dy * std::cos(latitude * 3.141592653589793 / 180.0);
+  image->SetSpacing(dx, dy, 1.0);
+}
+
+// SRTM: N x N big-endian 16-bit heights, north row first, -32768 where there is no data.
+vtkSmartPointer<vtkImageData> ReadSRTMHeights(const std::string& name, const Options& options,
+  MessageCapture& messages, Input& input, std::string& kind, std::string& error)
+{
+  const unsigned long bytes = vtksys::SystemTools::FileLength(name);
+  const auto side = static_cast<int>(std::lround(std::sqrt(bytes / 2.0)));
+  if (side < 2 || 2ul * side * side != bytes)
+  {
+    error = vtkApertureText::QuoteName(name) + " is not an SRTM tile: its " +
+      std::to_string(bytes) + " bytes are not N x N 16-bit samples";
+    return nullptr;
+  }
+  vtkNew<vtkImageReader2> raw;
+  raw->SetFileName(name.c_str());
+  raw->SetFileDimensionality(2);
+  raw->SetDataScalarTypeToShort();
+  raw->SetDataByteOrderToBigEndian();
+  raw->SetNumberOfScalarComponents(1);
+  raw->SetDataExtent(0, side - 1, 0, side - 1, 0, 0);
+  raw->FileLowerLeftOff();
+  raw->Update();
+  if (!messages.FirstError().empty())
+  {
+    error = "cannot read " + vtkApertureText::QuoteName(name) + ": " + messages.FirstError();
+    return nullptr;
+  }
+  vtkSmartPointer<vtkImageData> image = AsHeights(raw->GetOutput());
+  SetSRTMSpacing(image, name, side, options, input);
+  kind = "SRTM";
+  return image;
+}
+
 bool LoadHeightField(const std::string& name, const std::string& extension, const Options& options,
   MessageCapture& messages, Input& input, std::string& error)
 {
-  vtkSmartPointer<vtkImageData> image;
-  double spacing = options.Spacing > 0.0 ? options.Spacing : 30.0;
   std::string kind;
+  error.clear();
   messages.Clear();
+  vtkSmartPointer<vtkImageData> image;
   if (extension == ".png")
   {
-    const std::string problem = vtkPNGValidator::CheckFile(name.c_str());
-    if (!problem.empty())
-    {
-      error = problem;
-      return false;
-    }
-    vtkNew<vtkPNGReader> png;
-    png->SetFileName(name.c_str());
-    png->UpdateInformation();
-    if (png->GetNumberOfScalarComponents() >= 3 && png->GetDataScalarType() == VTK_UNSIGNED_CHAR)
-    {
-      vtkNew<vtkTerrainRGBReader> terrain;
-      terrain->SetFileName(name.c_str());
-      terrain->SetSpacing(spacing, spacing);
-      terrain->Update();
-      image = terrain->GetOutput();
-      kind = "Terrain-RGB";
-    }
-    else
-    {
-      png->Update();
-      image = AsHeights(png->GetOutput());
-      image->SetSpacing(spacing, spacing, 1.0);
-      kind = png->GetDataScalarType() == VTK_UNSIGNED_SHORT ? "16-bit grey" : "8-bit grey";
-    }
+    image = ReadPNGHeights(name, options.Spacing > 0.0 ? options.Spacing : 30.0, kind, error);
   }
   else if (IsGDALRaster(extension))
   {
-    vtkNew<vtkGDALDEMReader> raster;
-    raster->SetFileName(name.c_str());
-    raster->Update();
-    if (!messages.FirstError().empty())
-    {
-      error = "cannot read " + vtkApertureText::QuoteName(name) + ": " + messages.FirstError();
-      return false;
-    }
-    image = raster->GetOutput();
-    const bool georeferenced = raster->GetGeoreferenced();
-    if (options.Spacing > 0.0 || !georeferenced)
-    {
-      image->SetSpacing(spacing, spacing, 1.0);
-    }
-    else
-    {
-      input.Notes.push_back(std::string("ground spacing: ") + raster->GetGroundSpacingNote());
-    }
-    const bool tiff = extension == ".tif" || extension == ".tiff";
-    kind = tiff ? (georeferenced ? "GeoTIFF" : "TIFF") : "GDAL raster (" + extension + ")";
+    image = ReadGDALHeights(name, extension, options, messages, input, kind, error);
   }
   else if (extension == ".dem")
   {
-    if (!CheckDEM(name, error))
-    {
-      return false;
-    }
-    vtkNew<vtkDEMReader> dem;
-    dem->SetFileName(name.c_str());
-    dem->SetElevationReferenceToSeaLevel();
-    dem->Update();
-    image = AsHeights(dem->GetOutput());
-    if (options.Spacing > 0.0)
-    {
-      image->SetSpacing(spacing, spacing, 1.0);
-    }
-    kind = "USGS DEM";
+    image = ReadUSGSHeights(name, options, kind, error);
   }
   else // .hgt
   {
-    // SRTM: N x N big-endian 16-bit heights, north row first, -32768 where there is no data.
-    const unsigned long bytes = vtksys::SystemTools::FileLength(name);
-    const auto side = static_cast<int>(std::lround(std::sqrt(bytes / 2.0)));
-    if (side < 2 || 2ul * side * side != bytes)
-    {
-      error = vtkApertureText::QuoteName(name) + " is not an SRTM tile: its " +
-        std::to_string(bytes) + " bytes are not N x N 16-bit samples";
-      return false;
-    }
-    vtkNew<vtkImageReader2> raw;
-    raw->SetFileName(name.c_str());
-    raw->SetFileDimensionality(2);
-    raw->SetDataScalarTypeToShort();
-    raw->SetDataByteOrderToBigEndian();
-    raw->SetNumberOfScalarComponents(1);
-    raw->SetDataExtent(0, side - 1, 0, side - 1, 0, 0);
-    raw->FileLowerLeftOff();
-    raw->Update();
-    if (!messages.FirstError().empty())
-    {
-      error = "cannot read " + vtkApertureText::QuoteName(name) + ": " + messages.FirstError();
-      return false;
-    }
-    image = AsHeights(raw->GetOutput());
-    // Samples are 3600/(N-1) arc-seconds apart; east-west spacing shrinks with the latitude
-    // the name gives (N35E138.hgt: 35 to 36 degrees north).
-    const double arcSeconds = 3600.0 / (side - 1);
-    double latitude = 0.0;
-    std::smatch match;
-    const std::string base = vtksys::SystemTools::GetFilenameName(name);
-    if (std::regex_search(base, match, std::regex("^([NSns])([0-9]{1,2})[EWew][0-9]{1,3}")))
-    {
-      latitude = std::stod(match[2]) + 0.5;
-      latitude = (match[1] == "S" || match[1] == "s") ? -latitude : latitude;
-    }
-    else
-    {
-      input.Notes.push_back(
-        "the tile's name gives no latitude: east-west spacing as at the equator");
-    }
-    const double dy = options.Spacing > 0.0 ? options.Spacing : arcSeconds * MetresPerArcSecond;
-    const double dx =
-      options.Spacing > 0.0 ? options.Spacing : dy * std::cos(latitude * 3.141592653589793 / 180.0);
-    image->SetSpacing(dx, dy, 1.0);
-    kind = "SRTM";
+    image = ReadSRTMHeights(name, options, messages, input, kind, error);
+  }
+  if (!error.empty())
+  {
+    return false;
   }
   if (!messages.FirstError().empty() || !image || image->GetNumberOfPoints() == 0)
   {

@@ -131,7 +131,24 @@ View::View(const Options& options, const Input& input, vtkDataObject* apertures)
   this->Mode = options.Mode == "all"
     ? 0
     : static_cast<int>(std::find(names.begin(), names.end(), options.Mode) - names.begin());
+  this->MakeSurface(input);
+  this->SetUpMapper(input);
+  this->AddLights();
+  this->PlaceCamera();
+  this->AddOverlays();
+  this->ShowApertureData(options.ShowApertures);
+  this->Window->AddRenderer(this->Renderer);
+  this->Window->SetSize(options.Width, options.Height);
+  this->Window->SetMultiSamples(0);
+  this->Window->SetWindowName("aperture-render");
+}
 
+// The surface drawn (a height field's grid raised, or the mesh without cells on non-finite
+// points), its centre, and the compass of the view.
+void View::MakeSurface(const Input& input)
+{
+  const Options& options = this->Settings;
+  vtkDataObject* apertures = this->Apertures;
   if (this->HeightField)
   {
     // The grid's surface, raised as vtkAperturePrecompute raised it; point data (the apertures)
@@ -184,7 +201,12 @@ View::View(const Options& options, const Input& input, vtkDataObject* apertures)
   this->DefaultAzimuth = chosen.Azimuth;
   this->UpName = chosen.Up;
   this->UpReason = chosen.UpReason;
+}
 
+// The mapper and actor: shading mode, sky or environment, colours.
+void View::SetUpMapper(const Input& input)
+{
+  const Options& options = this->Settings;
   this->Mapper->SetInputData(this->Drawn);
   this->Mapper->SetShadingMode(this->Mode);
   this->Mapper->SetSkyColor(options.Sky[0], options.Sky[1], options.Sky[2]);
@@ -229,9 +251,12 @@ View::View(const Options& options, const Input& input, vtkDataObject* apertures)
   this->Actor->SetMapper(this->Mapper);
   this->Renderer->AddActor(this->Actor);
   this->Renderer->SetBackground(options.Background);
-  this->AddLights();
-  this->PlaceCamera();
+}
 
+// The mode label, the interactive status line and the aperture-radius legend, hidden until used.
+void View::AddOverlays()
+{
+  const Options& options = this->Settings;
   const int fontSize = std::max(12, options.Height / 22);
   this->Label->GetTextProperty()->SetFontSize(fontSize);
   this->Label->GetTextProperty()->SetColor(0.95, 0.95, 0.95);
@@ -258,12 +283,6 @@ View::View(const Options& options, const Input& input, vtkDataObject* apertures)
   }
   this->Legend->SetVisibility(false);
   this->Renderer->AddActor2D(this->Legend);
-
-  this->ShowApertureData(options.ShowApertures);
-  this->Window->AddRenderer(this->Renderer);
-  this->Window->SetSize(options.Width, options.Height);
-  this->Window->SetMultiSamples(0);
-  this->Window->SetWindowName("aperture-render");
 }
 
 View::~View()

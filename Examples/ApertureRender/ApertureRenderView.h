@@ -68,6 +68,9 @@ public:
   std::string Description() const;
 
 private:
+  void MakeSurface(const Input& input);
+  void SetUpMapper(const Input& input);
+  void AddOverlays();
   // Stops that show the environment well: see --env-exposure.
   double AutomaticExposure() const;
   // Turns the environment to a compass azimuth about the data's up axis.

@@ -22,7 +22,10 @@
 
 #include "vtkAperturePrecompute.h"
 #include "vtkApertureText.h"
+#include "vtkDataObject.h"
 #include "vtkDataSet.h"
+#include "vtkNew.h"
+#include "vtkSmartPointer.h"
 #include "vtkVersion.h"
 #include "vtksys/SystemTools.hxx"
 
@@ -89,23 +92,18 @@ bool CheckOutput(const std::string& option, const std::string& path,
   }
   return true;
 }
-}
 
-int main(int argc, char* argv[])
+// The command line read and the output paths checked; -1 to go on, else the exit status.
+int ReadCommandLine(int argc, char* argv[], ApertureRender::Options& options)
 {
-  using namespace ApertureRender;
-  MessageCapture messages;
-  Messages = &messages;
-  std::signal(SIGABRT, OnAbort);
-  Options options;
   std::string error;
-  if (const int code = ParseOptions(argc, argv, options, error))
+  if (const int code = ApertureRender::ParseOptions(argc, argv, options, error))
   {
     return Fail(error, code);
   }
   if (options.Help)
   {
-    std::cout << HelpText();
+    std::cout << ApertureRender::HelpText();
     return 0;
   }
   if (options.Version)
@@ -121,20 +119,26 @@ int main(int argc, char* argv[])
   {
     return Fail(error, 2);
   }
+  return -1;
+}
 
-  Input input;
-  if (!LoadInput(options, messages, input, error) ||
-    !LoadEnvironment(options, messages, input, error))
+// The input and the environment read, a height field resampled for rays, and the files that
+// depend on the input's kind checked; -1 to go on, else the exit status.
+int ReadInput(const ApertureRender::Options& options, ApertureRender::MessageCapture& messages,
+  ApertureRender::Input& input)
+{
+  std::string error;
+  if (!ApertureRender::LoadInput(options, messages, input, error) ||
+    !ApertureRender::LoadEnvironment(options, messages, input, error))
   {
     return Fail(error, 1);
   }
   const bool field = input.Heights != nullptr;
-  const bool rays = !field || options.RaysGiven;
   if (field)
   {
     // Rays cost per sample: resample first. Horizons take the whole grid, up to the largest
     // texture OpenGL implementations commonly have (16384), which shades the drawn mesh.
-    Resample(input, rays ? options.MaximumGrid : 16384);
+    ApertureRender::Resample(input, options.RaysGiven ? options.MaximumGrid : 16384);
   }
   const std::string wanted = field ? ".vti" : ".vtp";
   auto extension = [](const std::string& path)
@@ -154,72 +158,94 @@ int main(int argc, char* argv[])
   {
     Say("note: " + note);
   }
+  return -1;
+}
 
-  // The apertures: from the cache when it was made for this input, else cast.
-  const std::string fingerprint = Fingerprint(input, options);
-  vtkSmartPointer<vtkDataObject> apertures;
+// The apertures cast (rays for meshes, horizon sweeps for height fields unless --rays), with a
+// progress bar; null with the reason in `error` when the filter fails.
+vtkSmartPointer<vtkDataObject> CastApertures(const ApertureRender::Options& options,
+  const ApertureRender::Input& input, ApertureRender::MessageCapture& messages, std::string& error)
+{
+  const bool field = input.Heights != nullptr;
+  const bool rays = !field || options.RaysGiven;
+  vtkNew<vtkAperturePrecompute> precompute;
+  if (field)
+  {
+    precompute->SetInputData(input.Heights);
+  }
+  else
+  {
+    precompute->SetInputData(input.Mesh);
+  }
+  precompute->SetNumberOfRays(options.Rays);
+  precompute->SetNumberOfSectors(options.Sectors);
+  if (rays)
+  {
+    precompute->SetMethodToRays();
+  }
+  precompute->SetHeightScale(options.HeightScale);
+  precompute->SetFeatureAngle(options.Crease);
+  precompute->SetMaximumEdgeLength(input.MaximumEdge);
+  precompute->ComputeAmbientOcclusionOn();
+  messages.Clear();
+  const auto start = std::chrono::steady_clock::now();
+  {
+    ApertureRender::ProgressBar bar(precompute, "apertures");
+    precompute->Update();
+  }
+  const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
+  if (!messages.FirstError().empty())
+  {
+    error = "cannot compute the apertures: " + messages.FirstError();
+    return nullptr;
+  }
+  vtkDataObject* apertures = precompute->GetOutputDataObject(0);
+  std::cout << "apertures: " << vtkDataSet::SafeDownCast(apertures)->GetNumberOfPoints()
+            << " points x "
+            << (rays ? std::to_string(options.Rays) + " rays"
+                     : std::to_string(options.Sectors) + " horizon sectors")
+            << " in " << seconds.count() << " s\n";
+  return apertures;
+}
+
+// The apertures from the cache when it was made for this input, else cast (and cached).
+vtkSmartPointer<vtkDataObject> Apertures(const ApertureRender::Options& options,
+  const ApertureRender::Input& input, ApertureRender::MessageCapture& messages, std::string& error)
+{
+  const std::string fingerprint = ApertureRender::Fingerprint(input, options);
   if (!options.Cache.empty())
   {
     std::string note;
-    apertures = ReadCache(options.Cache, fingerprint, field, messages, note);
+    vtkSmartPointer<vtkDataObject> cached = ApertureRender::ReadCache(
+      options.Cache, fingerprint, input.Heights != nullptr, messages, note);
     if (!note.empty())
     {
       Say("note: " + note);
     }
-    if (apertures)
+    if (cached)
     {
       Say("apertures: read from the cache " + vtkApertureText::QuoteName(options.Cache));
+      return cached;
     }
   }
-  if (!apertures)
+  vtkSmartPointer<vtkDataObject> apertures = CastApertures(options, input, messages, error);
+  if (apertures && !options.Cache.empty())
   {
-    vtkNew<vtkAperturePrecompute> precompute;
-    if (field)
+    if (!ApertureRender::WriteCache(options.Cache, apertures, fingerprint, messages, error))
     {
-      precompute->SetInputData(input.Heights);
+      return nullptr;
     }
-    else
-    {
-      precompute->SetInputData(input.Mesh);
-    }
-    precompute->SetNumberOfRays(options.Rays);
-    precompute->SetNumberOfSectors(options.Sectors);
-    if (rays)
-    {
-      precompute->SetMethodToRays();
-    }
-    precompute->SetHeightScale(options.HeightScale);
-    precompute->SetFeatureAngle(options.Crease);
-    precompute->SetMaximumEdgeLength(input.MaximumEdge);
-    precompute->ComputeAmbientOcclusionOn();
-    messages.Clear();
-    const auto start = std::chrono::steady_clock::now();
-    {
-      ProgressBar bar(precompute, "apertures");
-      precompute->Update();
-    }
-    const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
-    if (!messages.FirstError().empty())
-    {
-      return Fail("cannot compute the apertures: " + messages.FirstError(), 1);
-    }
-    apertures = precompute->GetOutputDataObject(0);
-    const vtkIdType points = vtkDataSet::SafeDownCast(apertures)->GetNumberOfPoints();
-    std::cout << "apertures: " << points << " points x "
-              << (rays ? std::to_string(options.Rays) + " rays"
-                       : std::to_string(options.Sectors) + " horizon sectors")
-              << " in " << seconds.count() << " s\n";
-    if (!options.Cache.empty())
-    {
-      if (!WriteCache(options.Cache, apertures, fingerprint, messages, error))
-      {
-        return Fail(error, 1);
-      }
-      Say("apertures: cached in " + vtkApertureText::QuoteName(options.Cache));
-    }
+    Say("apertures: cached in " + vtkApertureText::QuoteName(options.Cache));
   }
+  return apertures;
+}
 
-  View view(options, input, apertures);
+// The view: its description, the data, the picture, the window; the exit status.
+int Show(const ApertureRender::Options& options, const ApertureRender::Input& input,
+  vtkDataObject* apertures, ApertureRender::MessageCapture& messages)
+{
+  std::string error;
+  ApertureRender::View view(options, input, apertures);
   if (!view.Open(error))
   {
     return Fail(error, 1);
@@ -246,4 +272,26 @@ int main(int argc, char* argv[])
     view.Interact();
   }
   return 0;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  ApertureRender::MessageCapture messages;
+  Messages = &messages;
+  std::signal(SIGABRT, OnAbort);
+  ApertureRender::Options options;
+  ApertureRender::Input input;
+  int code = ReadCommandLine(argc, argv, options);
+  if (code < 0)
+  {
+    code = ReadInput(options, messages, input);
+  }
+  if (code >= 0)
+  {
+    return code;
+  }
+  std::string error;
+  vtkSmartPointer<vtkDataObject> apertures = Apertures(options, input, messages, error);
+  return apertures ? Show(options, input, apertures, messages) : Fail(error, 1);
 }
