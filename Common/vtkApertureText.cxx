@@ -10,13 +10,16 @@
 =========================================================================*/
 #include "vtkApertureText.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <vector>
 
 namespace
 {
-const char* const Ellipsis = "\xe2\x80\xa6"; // U+2026
+// ASCII, so that a reader decoding messages as ASCII (a C locale) is not stopped by our marks.
+const char* const Ellipsis = "...";
+const std::size_t EllipsisWidth = 3;
 
 // How many bytes a UTF-8 sequence that starts with `lead` has; 0 for a byte that starts none
 // (continuation bytes, the overlong leads 0xc0 and 0xc1, leads beyond U+10FFFF).
@@ -124,15 +127,28 @@ std::size_t Width(const std::string& piece)
   return lead >= 0x80 ? 1 : piece.size();
 }
 
-// The first pieces that fit in `maximumLength` characters, with `…` when some are left out.
+// The width of all the pieces, in characters.
+std::size_t TotalWidth(const std::vector<std::string>& pieces)
+{
+  std::size_t width = 0;
+  for (const std::string& piece : pieces)
+  {
+    width += Width(piece);
+  }
+  return width;
+}
+
+// The pieces within `maximumLength` characters: all of them, or the first ones and `...`.
 std::string Head(const std::vector<std::string>& pieces, std::size_t maximumLength)
 {
+  const bool cut = TotalWidth(pieces) > maximumLength;
+  const std::size_t room = cut ? maximumLength - std::min(maximumLength, EllipsisWidth) : 0;
   std::string result;
   std::size_t width = 0;
   for (std::size_t k = 0; k < pieces.size(); ++k)
   {
     width += Width(pieces[k]);
-    if (width > maximumLength)
+    if (cut && width > room)
     {
       return result + Ellipsis;
     }
@@ -141,16 +157,18 @@ std::string Head(const std::vector<std::string>& pieces, std::size_t maximumLeng
   return result;
 }
 
-// The last pieces that fit in `maximumLength` characters, after `…` when some are left out.
+// The pieces within `maximumLength` characters: all of them, or `...` and the last ones.
 std::string Tail(const std::vector<std::string>& pieces, std::size_t maximumLength)
 {
+  const bool cut = TotalWidth(pieces) > maximumLength;
+  const std::size_t room = cut ? maximumLength - std::min(maximumLength, EllipsisWidth) : 0;
   std::size_t width = 0;
   std::size_t first = pieces.size();
-  while (first > 0 && width + Width(pieces[first - 1]) <= maximumLength)
+  while (first > 0 && (!cut || width + Width(pieces[first - 1]) <= room))
   {
     width += Width(pieces[--first]);
   }
-  std::string result = first > 0 ? Ellipsis : "";
+  std::string result = cut ? Ellipsis : "";
   for (std::size_t k = first; k < pieces.size(); ++k)
   {
     result += pieces[k];

@@ -20,8 +20,10 @@
  * What is kept: printable ASCII and valid UTF-8 of printable characters. What is escaped: bytes
  * below 0x20 and DEL as `\xNN`, bytes that are not valid UTF-8 one by one as `\xNN`, C1 controls,
  * bidirectional controls and line separators as `\uNNNN`. Lengths count the characters shown (an
- * escape counts as the characters it writes); what is cut is marked with `…` (U+2026). The result
- * is valid UTF-8 with no byte below 0x20.
+ * escape counts as the characters it writes); what is cut is marked with `...`, within the
+ * length. The result is valid UTF-8 with no byte below 0x20, and ASCII unless the input holds
+ * printable non-ASCII characters (a name in another script), so that a reader decoding as ASCII
+ * (a C locale) is only ever stopped by the input's own letters.
  */
 
 #ifndef vtkApertureText_h

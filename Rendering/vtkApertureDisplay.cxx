@@ -10,6 +10,7 @@
 =========================================================================*/
 #include "vtkApertureDisplay.h"
 
+#include "vtkApertureText.h"
 #include "vtkRenderWindow.h"
 
 #ifdef APERTURE_USE_X11
@@ -41,14 +42,14 @@ bool vtkApertureDisplay::Get(void*& display, std::string& problem)
   }
   if (!shared)
   {
-    problem = std::string("cannot open the X display '") + (name ? name : "") +
-      "' (Debian's VTK renders through X; without a screen, run under xvfb-run)";
+    problem = "cannot open the X display " + vtkApertureText::Quote(name ? name : "") +
+      " (this VTK renders through X; without a screen, run under xvfb-run)";
     return false;
   }
   if (DefaultDepth(shared, DefaultScreen(shared)) < 24)
   {
-    problem = std::string("the X display '") + (name ? name : "") +
-      "' has fewer than 24 bits of colour, which OpenGL needs";
+    problem = "the X display " + vtkApertureText::Quote(name ? name : "") +
+      " has fewer than 24 bits of colour, which OpenGL needs";
     return false;
   }
   display = shared;
@@ -61,13 +62,16 @@ bool vtkApertureDisplay::Get(void*& display, std::string& problem)
 //------------------------------------------------------------------------------
 vtkRenderWindow* vtkApertureDisplay::NewOffScreenWindow(std::string& problem)
 {
+  // The window VTK was built with: only an X window needs the X display (an EGL or OSMesa
+  // build of VTK renders without one, even where X11 was found when this module was built).
+  vtkRenderWindow* window = vtkRenderWindow::New();
   void* display = nullptr;
-  if (!vtkApertureDisplay::Get(display, problem))
+  if (window->IsA("vtkXOpenGLRenderWindow") && !vtkApertureDisplay::Get(display, problem))
   {
     problem = "No OpenGL context: " + problem + ".";
+    window->Delete();
     return nullptr;
   }
-  vtkRenderWindow* window = vtkRenderWindow::New();
   if (display)
   {
     window->SetDisplayId(display);

@@ -17,7 +17,8 @@
  * opened and closed one after another (one per filter) would fail at random. The module
  * therefore opens one connection when it first needs it, reports a missing display as an error,
  * hands that connection to its windows (vtkRenderWindow::SetDisplayId()), and keeps it open for
- * the rest of the program. Without X11 there is nothing to check.
+ * the rest of the program. A VTK whose windows are not X windows (EGL, OSMesa) needs no display,
+ * and none is checked.
  *
  * NewOffScreenWindow() opens such a window for filters that render without one of the caller's.
  */

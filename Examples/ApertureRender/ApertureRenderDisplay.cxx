@@ -24,8 +24,8 @@ void* OpenDisplay(std::string& error)
   Display* display = XOpenDisplay(nullptr);
   if (!display)
   {
-    error = std::string("cannot open the X display '") + (name ? name : "") +
-      "' (Debian's VTK renders through X: run under xvfb-run -a -s '-screen 0 1280x1024x24' "
+    error = "cannot open the X display " + vtkApertureText::Quote(name ? name : "") +
+      " (Debian's VTK renders through X: run under xvfb-run -a -s '-screen 0 1280x1024x24' "
       "for pictures without a screen)";
     return nullptr;
   }

@@ -10,13 +10,15 @@
 =========================================================================*/
 // vtkOcclusionQueryVisibility where OpenGL falls short. ctest runs this test three times:
 // - plainly: every backend works;
-// - with --no-display and DISPLAY pointing nowhere: the OpenGL backends fail with an error that
-//   says there is no OpenGL context (VTK's own window would abort the program), RayCast works;
+// - with --no-display and DISPLAY pointing nowhere (a name holding ESC and BEL): the OpenGL
+//   backends fail with an error that says there is no OpenGL context (VTK's own window would
+//   abort the program) and shows the name escaped, RayCast works;
 // - with --old-gl under MESA_GL_VERSION_OVERRIDE=3.2: DepthCompare fails naming the OpenGL 4.3
 //   it needs, OcclusionQuery works where the driver still offers its queries or names them,
 //   RayCast works.
 
 #include "vtkApertureTestHarness.h"
+#include "vtkApertureText.h"
 #include "vtkOcclusionQueryVisibility.h"
 
 #include "vtkCommand.h"
@@ -27,6 +29,7 @@
 #include "vtkSphereSource.h"
 #include "vtkTestErrorObserver.h"
 
+#include <cstdlib>
 #include <iostream>
 #include <string>
 
@@ -51,7 +54,8 @@ std::string Run(vtkPolyData* input, int backend)
     return std::string();
   }
   const std::string message = errors->GetError() ? errors->GetErrorMessage() : "(no error)";
-  return message.substr(message.find("): ") + 3);
+  std::string text = message.substr(message.find("): ") + 3);
+  return text.erase(text.find_last_not_of('\n') + 1);
 }
 }
 
@@ -63,15 +67,20 @@ int TestOcclusionQueryVisibilityNoGL(int argc, char* argv[])
     const std::string arg = argv[i];
     mode = arg == "--no-display" ? "no-display" : (arg == "--old-gl" ? "old-gl" : mode);
   }
+  if (mode == "no-display")
+  {
+    // Nowhere, by a name that would retitle a terminal if printed raw.
+    setenv("DISPLAY", "\x1b]2;owned\x07:4919", 1);
+  }
   vtkNew<vtkSphereSource> sphere;
   sphere->Update();
 
   const std::string query = Run(sphere->GetOutput(), vtkOcclusionQueryVisibility::OCCLUSION_QUERY);
   const std::string depth = Run(sphere->GetOutput(), vtkOcclusionQueryVisibility::DEPTH_COMPARE);
   const std::string rays = Run(sphere->GetOutput(), vtkOcclusionQueryVisibility::RAY_CAST);
-  std::cout << "mode " << mode << "\n  OcclusionQuery: " << (query.empty() ? "works\n" : query)
-            << "  DepthCompare: " << (depth.empty() ? "works\n" : depth)
-            << "  RayCast: " << (rays.empty() ? "works\n" : rays);
+  std::cout << "mode " << mode << "\n  OcclusionQuery: " << (query.empty() ? "works" : query)
+            << "\n  DepthCompare: " << (depth.empty() ? "works" : depth)
+            << "\n  RayCast: " << (rays.empty() ? "works" : rays) << "\n";
 
   const std::string inMode = "mode " + mode + ": ";
   Check(rays.empty(), inMode + "RayCast must work");
@@ -81,6 +90,9 @@ int TestOcclusionQueryVisibilityNoGL(int argc, char* argv[])
       inMode + "OcclusionQuery must fail saying there is no OpenGL context");
     Check(depth.find("No OpenGL context") != std::string::npos,
       inMode + "DepthCompare must fail saying there is no OpenGL context");
+    Check(
+      vtkApertureText::IsSafe(query) && query.find("\\x1b]2;owned\\x07:4919") != std::string::npos,
+      inMode + "the error shows the display's name escaped");
   }
   else if (mode == "old-gl")
   {

@@ -43,7 +43,9 @@ def path(name):
 
 
 def run(*args, env=None):
-    return subprocess.run([EXE, *args], capture_output=True, text=True, timeout=600, env=env)
+    # UTF-8 whatever the locale: the messages must be valid UTF-8, ASCII or not.
+    return subprocess.run([EXE, *args], capture_output=True, encoding="utf-8", timeout=600,
+                          env=env)
 
 
 def read_png(name):
@@ -592,10 +594,10 @@ for facing, compass in ((1.0, "E"), (-1.0, "W")):
           f"{100 * shown:.0f}% of the picture)")
 
 # Hostile bytes: a message that quotes a file (or its name) must be safe to print as it is.
-def expect_safe_failure(what, args, status, escaped):
+def expect_safe_failure(what, args, status, escaped, env=None):
     """Refused with one line on stderr that is valid UTF-8, holds no byte below 0x20 but its
     final newline, is at most 400 characters long and shows `escaped` (the quoted bytes, escaped)."""
-    result = subprocess.run([EXE, *args], capture_output=True, timeout=600)
+    result = subprocess.run([EXE, *args], capture_output=True, timeout=600, env=env)
     err = result.stderr.replace(b"\r\n", b"\n")
     lines = [line for line in err.split(b"\n")[:-1] if not line.startswith(b"==")]
     try:
@@ -634,6 +636,9 @@ expect_safe_failure("a file name holding ESC, a newline and BEL",
 expect_safe_failure("a missing environment of such a name",
                     [bunny, *FAST, "--env", path(hostile_name + ".exr"), "-o", path("x.png")],
                     1, hostile_escaped)
+expect_safe_failure("a DISPLAY holding ESC and BEL", [bunny, *FAST, "-o", path("x.png")], 1,
+                    r"\x1b]0;owned\x07:99",
+                    env={**os.environ, "DISPLAY": "\x1b]0;owned\x07:99"})
 expect_safe_failure("an unknown option holding ESC", ["--\x1b[2Jfrobnicate", "-o", path("x.png")],
                     2, r"--\x1b[2Jfrobnicate")
 
