@@ -582,7 +582,6 @@ void vtkAperturePrecompute::vtkRun::WriteOutputs(const int* extent)
   const float openRadius = static_cast<float>(0.5 * Pi), closedRadius = 0.0f;
   const float openOcclusion = 1.0f, closedOcclusion = 0.0f;
   const float up[3] = { 0.0f, 0.0f, 1.0f };
-  const float noNormal[3] = { 0.0f, 0.0f, 0.0f };
   for (const auto& r : this->Receivers)
   {
     std::vector<vtkIdType> points;
@@ -609,12 +608,7 @@ void vtkAperturePrecompute::vtkRun::WriteOutputs(const int* extent)
         vtkApertureSurface::Scatter(self->AmbientOcclusionArrayName, 1, c.Occlusion.data(),
           c.Occlusion.data() + c.Occlusion.size(), points, &openOcclusion, &closedOcclusion));
     }
-    if (r->Surface.NormalsComputed)
-    {
-      const float* normals = r->Surface.GetNormal(0);
-      pd->SetNormals(vtkApertureSurface::Scatter("Normals", 3, normals,
-        normals + 3 * r->Surface.GetNumberOfPoints(), points, noNormal, noNormal));
-    }
+    r->Surface.AddComputedNormals(pd, points);
     // A tile: the input's halo cast rays, the output is the tile.
     auto* image = vtkImageData::SafeDownCast(r->Output);
     if (image && extent && !std::equal(extent, extent + 6, image->GetExtent()))

@@ -247,13 +247,7 @@ void WriteArrays(vtkApertureReference* self, const vtkApertureSurface& receivers
 {
   const float nan[3] = { std::numeric_limits<float>::quiet_NaN(),
     std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::quiet_NaN() };
-  const float zero[3] = { 0.0f, 0.0f, 0.0f };
-  if (receivers.NormalsComputed)
-  {
-    const float* normals = receivers.GetNormal(0);
-    pd->SetNormals(vtkApertureSurface::Scatter(
-      "Normals", 3, normals, normals + 3 * receivers.GetNumberOfPoints(), points, zero, zero));
-  }
+  receivers.AddComputedNormals(pd, points);
   pd->AddArray(vtkApertureSurface::Scatter(self->GetIrradianceArrayName(), components,
     irradiance.data(), irradiance.data() + irradiance.size(), points, nan, nan));
   pd->AddArray(vtkApertureSurface::Scatter(self->GetNoiseArrayName(), components, noise.data(),

@@ -1531,3 +1531,16 @@ vtkSmartPointer<vtkFloatArray> vtkApertureSurface::Scatter(const std::string& na
   }
   return array;
 }
+
+//------------------------------------------------------------------------------
+void vtkApertureSurface::AddComputedNormals(
+  vtkPointData* pd, const std::vector<vtkIdType>& outputPoints) const
+{
+  if (this->NormalsComputed)
+  {
+    const float none[3] = { 0.0f, 0.0f, 0.0f };
+    const float* normals = this->GetNormal(0);
+    pd->SetNormals(Scatter(
+      "Normals", 3, normals, normals + 3 * this->GetNumberOfPoints(), outputPoints, none, none));
+  }
+}

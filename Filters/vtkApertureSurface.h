@@ -46,6 +46,7 @@
 class vtkDataArray;
 class vtkFloatArray;
 class vtkImageData;
+class vtkPointData;
 class vtkPoints;
 class vtkPolyData;
 
@@ -114,6 +115,12 @@ public:
   static vtkSmartPointer<vtkFloatArray> Scatter(const std::string& name, int components,
     const float* begin, const float* end, const std::vector<vtkIdType>& outputPoints,
     const float* open, const float* closed);
+
+  /**
+   * When the normals were computed here (the input had none: NormalsComputed), sets them as
+   * `pd`'s Normals over MakeOutput()'s `outputPoints`, (0, 0, 0) where a point has none.
+   */
+  void AddComputedNormals(vtkPointData* pd, const std::vector<vtkIdType>& outputPoints) const;
 
   /**
    * How a polygon or strip becomes triangles, for every caster and for refinement: appends to

@@ -827,13 +827,7 @@ void vtkOcclusionQueryVisibility::WriteOutputs(vtkPolyData* input, vtkPolyData* 
   receivers.MakeOutput(input, output, points);
   const vtkIdType m = static_cast<vtkIdType>(points.size());
   vtkPointData* pd = output->GetPointData();
-  if (receivers.NormalsComputed)
-  {
-    const float* normals = receivers.GetNormal(0);
-    const float zero[3] = { 0.0f, 0.0f, 0.0f };
-    pd->SetNormals(vtkApertureSurface::Scatter(
-      "Normals", 3, normals, normals + 3 * receivers.GetNumberOfPoints(), points, zero, zero));
-  }
+  receivers.AddComputedNormals(pd, points);
   const Sees sees{ receivers, points, in.Directions, in.Computed, directions };
   if (this->ComputeVisibility)
   {
