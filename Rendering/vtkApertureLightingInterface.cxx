@@ -16,9 +16,11 @@
 #include "vtkSphericalCapGLSL.h"
 
 #include "vtkActor.h"
+#include "vtkArrayDispatch.h"
 #include "vtkCamera.h"
 #include "vtkCollectionIterator.h"
 #include "vtkDataArray.h"
+#include "vtkDataArrayRange.h"
 #include "vtkEnvironmentMap.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -40,6 +42,7 @@
 #include "vtkProperty.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
+#include "vtk_glew.h"
 
 #include <algorithm>
 #include <cmath>
@@ -586,6 +589,33 @@ void vtkApertureLightingInterface::SetTextureParameters(vtkShaderProgram* progra
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// Bent normals and radii of grid points [first, first + count) as RGBA texels, read through
+// array ranges (typed access for float and double arrays, no virtual call per value).
+struct PackTexels
+{
+  template <typename BentArray, typename RadiusArray>
+  void operator()(
+    BentArray* bent, RadiusArray* radius, vtkIdType first, vtkIdType count, float* texels) const
+  {
+    const auto normals = vtk::DataArrayTupleRange<3>(bent, first, first + count);
+    const auto radii = vtk::DataArrayValueRange<1>(radius, first, first + count);
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        texels[4 * i + k] = static_cast<float>(normals[i][k]);
+      }
+      texels[4 * i + 3] = static_cast<float>(radii[i]);
+    }
+  }
+};
+}
+
+//------------------------------------------------------------------------------
+// The grid goes up a band of rows at a time, so that the packed texels (16 bytes a texel, as
+// much as the arrays themselves) never take the whole grid's memory beside them.
 bool vtkApertureLightingInterface::UploadTexture(vtkRenderer* renderer)
 {
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
@@ -600,16 +630,6 @@ bool vtkApertureLightingInterface::UploadTexture(vtkRenderer* renderer)
   vtkPointData* pd = this->ApertureImage->GetPointData();
   vtkDataArray* bent = pd->GetArray(this->BentNormalArrayName.c_str());
   vtkDataArray* radius = pd->GetArray(this->ApertureRadiusArrayName.c_str());
-  const vtkIdType n = static_cast<vtkIdType>(dims[0]) * dims[1];
-  std::vector<float> texels(4 * n);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      texels[4 * i + k] = static_cast<float>(bent->GetComponent(i, k));
-    }
-    texels[4 * i + 3] = static_cast<float>(radius->GetComponent(i, 0));
-  }
   if (!this->Texture)
   {
     this->Texture = vtkSmartPointer<vtkTextureObject>::New();
@@ -619,11 +639,28 @@ bool vtkApertureLightingInterface::UploadTexture(vtkRenderer* renderer)
   this->Texture->SetWrapT(vtkTextureObject::ClampToEdge);
   this->Texture->SetMinificationFilter(vtkTextureObject::Linear);
   this->Texture->SetMagnificationFilter(vtkTextureObject::Linear);
-  if (!this->Texture->Create2DFromRaw(dims[0], dims[1], 4, VTK_FLOAT, texels.data()))
+  if (!this->Texture->Create2DFromRaw(dims[0], dims[1], 4, VTK_FLOAT, nullptr))
   {
     this->Texture = nullptr;
     return false;
   }
+  const int band = std::max(1, std::min(dims[1], (1 << 20) / std::max(1, dims[0])));
+  std::vector<float> texels(4 * static_cast<size_t>(dims[0]) * band);
+  using Dispatch =
+    vtkArrayDispatch::Dispatch2ByValueType<vtkArrayDispatch::Reals, vtkArrayDispatch::Reals>;
+  this->Texture->Activate();
+  for (int row = 0; row < dims[1]; row += band)
+  {
+    const int rows = std::min(band, dims[1] - row);
+    const vtkIdType first = static_cast<vtkIdType>(row) * dims[0];
+    const vtkIdType count = static_cast<vtkIdType>(rows) * dims[0];
+    if (!Dispatch::Execute(bent, radius, PackTexels{}, first, count, texels.data()))
+    {
+      PackTexels{}(bent, radius, first, count, texels.data());
+    }
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, row, dims[0], rows, GL_RGBA, GL_FLOAT, texels.data());
+  }
+  this->Texture->Deactivate();
   this->TextureTime.Modified();
   return true;
 }

@@ -10,7 +10,9 @@
 =========================================================================*/
 // The per-texel mode: apertures computed on the Fuji height field (one per texel) and read from
 // a texture, with texture coordinates generated from the surface's x and y or taken from the
-// input's own, render the same terrain as apertures computed per vertex on the same surface.
+// input's own, render the same terrain as apertures computed per vertex on the same surface. A
+// grid larger than one upload band (1200 x 1000 texels, uploaded 873 rows at a time) arrives
+// whole: a plane whose texels are all open is lit evenly to its far edge.
 
 #include "vtkApertureLightingMapper.h"
 #include "vtkAperturePrecompute.h"
@@ -20,10 +22,13 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkExtractVOI.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkImageDataGeometryFilter.h"
 #include "vtkLight.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
+#include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkRenderWindow.h"
@@ -38,8 +43,82 @@
 
 using vtkApertureTest::Check;
 
+namespace
+{
+// A plane under a sun overhead, shaded from a 1200 x 1000 grid of open apertures, is as bright
+// by the grid's last rows as by its first.
+void CheckLargeGrid()
+{
+  vtkNew<vtkImageData> grid;
+  grid->SetDimensions(1200, 1000, 1);
+  const vtkIdType n = grid->GetNumberOfPoints();
+  vtkNew<vtkFloatArray> bent, radius;
+  bent->SetName("BentNormal");
+  bent->SetNumberOfComponents(3);
+  bent->SetNumberOfTuples(n);
+  radius->SetName("ApertureRadius");
+  radius->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    bent->SetTuple3(i, 0.0, 0.0, 1.0);
+    radius->SetValue(i, static_cast<float>(0.5 * vtkMath::Pi()));
+  }
+  grid->GetPointData()->AddArray(bent);
+  grid->GetPointData()->AddArray(radius);
+  vtkNew<vtkPlaneSource> plane; // texture coordinates 0 to 1 over the grid
+  plane->SetOrigin(0.0, 0.0, 0.0);
+  plane->SetPoint1(1199.0, 0.0, 0.0);
+  plane->SetPoint2(0.0, 999.0, 0.0);
+  vtkNew<vtkApertureLightingMapper> mapper;
+  mapper->SetInputConnection(plane->GetOutputPort());
+  mapper->SetApertureImage(grid);
+  mapper->SetSkyIntensity(0.1);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  vtkNew<vtkLight> sun;
+  sun->SetLightTypeToSceneLight();
+  sun->SetIntensity(0.4);
+  sun->SetPosition(600.0, 500.0, 1000.0);
+  sun->SetFocalPoint(600.0, 500.0, 0.0);
+  renderer->AddLight(sun);
+  vtkNew<vtkRenderWindow> window;
+  window->SetSize(120, 100);
+  window->SetMultiSamples(0);
+  window->AddRenderer(renderer);
+  renderer->GetActiveCamera()->SetPosition(599.5, 499.5, 3000.0);
+  renderer->ResetCamera();
+  window->Render();
+  vtkNew<vtkUnsignedCharArray> pixels;
+  window->GetPixelData(0, 0, 119, 99, 1, pixels, 0);
+  // The mean value of 5 x 5 pixels around grid row 200 (the first band) and row 950 (the last).
+  double quarters[2] = { 0.0, 0.0 };
+  for (int y : { 0, 1 })
+  {
+    double display[3];
+    renderer->SetWorldPoint(599.5, y ? 950.0 : 200.0, 0.0, 1.0);
+    renderer->WorldToDisplay();
+    renderer->GetDisplayPoint(display);
+    const int cx = static_cast<int>(display[0]), cy = static_cast<int>(display[1]);
+    for (int row = cy - 2; row <= cy + 2; ++row)
+    {
+      for (int x = 3 * (cx - 2); x < 3 * (cx + 3); ++x)
+      {
+        quarters[y] += pixels->GetValue(row * 120 * 3 + x) / 75.0;
+      }
+    }
+  }
+  std::cout << "1200 x 1000 grid: mean value " << quarters[0] << " at row 200, " << quarters[1]
+            << " at row 950\n";
+  Check(quarters[0] > 40.0 && quarters[0] < 250.0 && std::abs(quarters[0] - quarters[1]) < 1.0,
+    "a grid of several upload bands reaches the texture whole");
+}
+}
+
 int TestApertureLightingMapperPerTexel(int argc, char* argv[])
 {
+  CheckLargeGrid();
   char* file = vtkTestUtilities::ExpandDataFileName(argc, argv, "Data/fuji-terrain-rgb.png");
   vtkNew<vtkTerrainRGBReader> reader;
   reader->SetFileName(file);
