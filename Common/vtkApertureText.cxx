@@ -88,12 +88,15 @@ std::string Hex(const char* format, unsigned value)
   return buffer;
 }
 
-// The text as the pieces it is shown as: one per character kept, one per escape.
-std::vector<std::string> Pieces(const std::string& text, bool doubleBackslash)
+// The text as the pieces it is shown as: one per character kept, one per escape; at most
+// `most` of them (a piece is at least a character wide, so a head of `maximumLength` characters
+// needs no more than maximumLength + 1 to know it is cut, however long the text).
+std::vector<std::string> Pieces(
+  const std::string& text, bool doubleBackslash, std::size_t most = std::string::npos)
 {
   std::vector<std::string> pieces;
-  pieces.reserve(text.size());
-  for (std::size_t at = 0; at < text.size();)
+  pieces.reserve(std::min(text.size(), most));
+  for (std::size_t at = 0; at < text.size() && pieces.size() < most;)
   {
     std::size_t length = 0;
     const std::uint32_t code = Decode(text, at, length);
@@ -118,6 +121,12 @@ std::vector<std::string> Pieces(const std::string& text, bool doubleBackslash)
     at += length;
   }
   return pieces;
+}
+
+// How many pieces Head() needs for `maximumLength` characters.
+std::size_t HeadPieces(std::size_t maximumLength)
+{
+  return maximumLength == std::string::npos ? maximumLength : maximumLength + 1;
 }
 
 // A piece's width on the screen, in characters.
@@ -179,7 +188,7 @@ std::string Tail(const std::vector<std::string>& pieces, std::size_t maximumLeng
 
 std::string vtkApertureText::Escape(const std::string& text, std::size_t maximumLength)
 {
-  return Head(Pieces(text, true), maximumLength);
+  return Head(Pieces(text, true, HeadPieces(maximumLength)), maximumLength);
 }
 
 std::string vtkApertureText::Quote(const std::string& text, std::size_t maximumLength)
@@ -194,7 +203,7 @@ std::string vtkApertureText::QuoteName(const std::string& name, std::size_t maxi
 
 std::string vtkApertureText::Line(const std::string& message, std::size_t maximumLength)
 {
-  return Head(Pieces(message, false), maximumLength);
+  return Head(Pieces(message, false, HeadPieces(maximumLength)), maximumLength);
 }
 
 bool vtkApertureText::IsSafe(const std::string& text)

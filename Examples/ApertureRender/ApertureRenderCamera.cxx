@@ -98,11 +98,17 @@ std::string AxisName(int axis, double sign)
 }
 }
 
+double CompassAzimuth(double azimuth)
+{
+  const double turned = std::fmod(azimuth, 360.0);
+  return turned < 0.0 ? turned + 360.0 : turned;
+}
+
 std::string CompassName(double azimuth)
 {
   static const char* const names[] = { "N", "NNE", "NE", "ENE", "E", "ESE", "SE", "SSE", "S", "SSW",
     "SW", "WSW", "W", "WNW", "NW", "NNW" };
-  const double turned = std::fmod(std::fmod(azimuth, 360.0) + 360.0 + 11.25, 360.0);
+  const double turned = CompassAzimuth(azimuth + 11.25);
   return names[std::min(15, static_cast<int>(turned / 22.5))];
 }
 
@@ -166,9 +172,8 @@ MeshView ChooseView(vtkPolyData* mesh, const std::string& up)
   double east[3], north[3], upward[3], eye[3] = { 0.0, 0.0, 0.0 };
   CompassOf(view.Up, east, north, upward);
   eye[along] = sign;
-  view.Azimuth = std::fmod(360.0 +
-      vtkMath::DegreesFromRadians(std::atan2(vtkMath::Dot(eye, east), vtkMath::Dot(eye, north))),
-    360.0);
+  view.Azimuth = CompassAzimuth(
+    vtkMath::DegreesFromRadians(std::atan2(vtkMath::Dot(eye, east), vtkMath::Dot(eye, north))));
   return view;
 }
 }

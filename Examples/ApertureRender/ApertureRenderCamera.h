@@ -22,7 +22,7 @@ namespace ApertureRender
 struct MeshView
 {
   std::string Up;       // "+x" ... "-z"
-  double Azimuth;       // compass azimuth of the eye, degrees (see View::Direction)
+  double Azimuth = 0.0; // compass azimuth of the eye, degrees (see View::Direction)
   std::string UpReason; // why Up, for the line that describes the view
 };
 
@@ -32,6 +32,9 @@ struct MeshView
 // open scan), else on the conventional front (+z with y up, -y with z up). No shape rule tells a
 // lying figure from a standing one, so without a base the reason says how to change the guess.
 MeshView ChooseView(vtkPolyData* mesh, const std::string& up);
+
+// An azimuth in degrees turned into [0, 360).
+double CompassAzimuth(double azimuth);
 
 // The 16-point compass name of an azimuth in degrees: "N", "NNE", ... "NNW".
 std::string CompassName(double azimuth);

@@ -194,13 +194,10 @@ void View::MakeSurface(const Input& input)
     this->Center[k] = bounds[0] <= bounds[1] ? 0.5 * (bounds[2 * k] + bounds[2 * k + 1]) : 0.0;
   }
   // Height fields rise along +z and are seen from the south-south-west; meshes, see ChooseView.
-  const MeshView chosen = this->HeightField ? MeshView{ options.Up.empty() ? "+z" : options.Up,
-    200.0, options.Up.empty() ? "height field" : "given with --up" }
-                                            : ChooseView(this->Drawn, options.Up);
-  CompassOf(chosen.Up, this->East, this->North, this->Up);
-  this->DefaultAzimuth = chosen.Azimuth;
-  this->UpName = chosen.Up;
-  this->UpReason = chosen.UpReason;
+  this->Chosen = this->HeightField ? MeshView{ options.Up.empty() ? "+z" : options.Up, 200.0,
+    options.Up.empty() ? "height field" : "given with --up" }
+                                   : ChooseView(this->Drawn, options.Up);
+  CompassOf(this->Chosen.Up, this->East, this->North, this->Up);
 }
 
 // The mapper and actor: shading mode, sky or environment, colours.
@@ -363,8 +360,8 @@ void View::AddLights()
     // sees is lit and the shadows fall where it sees them.
     double azimuth, elevation;
     this->EyeAngles(azimuth, elevation);
-    this->SunAngles.push_back(Sun{ std::fmod(std::fmod(azimuth + 45.0, 360.0) + 360.0, 360.0),
-      std::min(85.0, std::max(-85.0, elevation + 30.0)), 0.27 });
+    this->SunAngles.push_back(Sun{
+      CompassAzimuth(azimuth + 45.0), std::min(85.0, std::max(-85.0, elevation + 30.0)), 0.27 });
   }
   for (const Sun& angles : this->SunAngles)
   {
@@ -413,7 +410,7 @@ void View::AddLights()
 void View::EyeAngles(double& azimuth, double& elevation) const
 {
   azimuth =
-    std::isnan(this->Settings.CameraAzimuth) ? this->DefaultAzimuth : this->Settings.CameraAzimuth;
+    std::isnan(this->Settings.CameraAzimuth) ? this->Chosen.Azimuth : this->Settings.CameraAzimuth;
   elevation = std::isnan(this->Settings.CameraElevation) ? (this->HeightField ? 28.0 : 15.0)
                                                          : this->Settings.CameraElevation;
 }
@@ -424,7 +421,7 @@ std::string View::Description() const
   this->EyeAngles(azimuth, elevation);
   std::ostringstream line;
   line << "view: eye from the " << CompassName(azimuth) << " (azimuth " << azimuth << ", "
-       << elevation << " deg up), up " << this->UpName << " (" << this->UpReason << "); ";
+       << elevation << " deg up), up " << this->Chosen.Up << " (" << this->Chosen.UpReason << "); ";
   if (this->SunAngles.empty())
   {
     line << "no sun";
@@ -622,7 +619,7 @@ void View::OnKey(vtkObject* caller, unsigned long, void* clientData, void*)
   Sun* sun = view->SunAngles.empty() ? nullptr : &view->SunAngles[0];
   if (sun && (key == "Left" || key == "Right"))
   {
-    sun->Azimuth = std::fmod(sun->Azimuth + (key == "Left" ? -10.0 : 10.0) + 360.0, 360.0);
+    sun->Azimuth = CompassAzimuth(sun->Azimuth + (key == "Left" ? -10.0 : 10.0));
   }
   else if (sun && (key == "Up" || key == "Down"))
   {
@@ -651,8 +648,7 @@ void View::OnKey(vtkObject* caller, unsigned long, void* clientData, void*)
   }
   else if ((key == "e" || key == "E") && view->Mapper->GetSkyEnvironment())
   {
-    view->TurnEnvironment(
-      std::fmod(view->EnvironmentAzimuth + (key == "e" ? 15.0 : -15.0) + 360.0, 360.0));
+    view->TurnEnvironment(CompassAzimuth(view->EnvironmentAzimuth + (key == "e" ? 15.0 : -15.0)));
   }
   else if (key == "s")
   {

@@ -14,6 +14,7 @@
 #ifndef ApertureRenderView_h
 #define ApertureRenderView_h
 
+#include "ApertureRenderCamera.h" // For MeshView
 #include "ApertureRenderOptions.h"
 
 #include "vtkNew.h"
@@ -92,9 +93,8 @@ private:
   vtkSmartPointer<vtkDataObject> Apertures;
   vtkSmartPointer<vtkPolyData> Surface;
   vtkSmartPointer<vtkPolyData> Drawn; // Surface without cells that use points not finite
-  double DefaultAzimuth = 180.0;
-  std::string UpName, UpReason; // the up axis and why it was chosen
-  bool DefaultSun = false;      // the sun was placed by the view, not given
+  MeshView Chosen;                    // the default view: up axis (and why), the eye's azimuth
+  bool DefaultSun = false;            // the sun was placed by the view, not given
   double Center[3];
   double East[3], North[3], Up[3];
   int Mode = 0;
