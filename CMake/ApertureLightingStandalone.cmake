@@ -1,5 +1,6 @@
-# Standalone build of VTK::ApertureLighting against an installed VTK 9.1: the library, its Python
-# package `aperturelighting`, the CMake package `ApertureLighting` and the tests.
+# Standalone build of ApertureLighting against an installed VTK 9.1: its modules (Core/, IO/*/,
+# Rendering/ and the umbrella VTK::ApertureLighting), the Python package `aperturelighting`, the
+# CMake package `ApertureLighting` and the tests.
 
 include(GNUInstallDirs)
 
@@ -50,7 +51,7 @@ if (BUILD_TESTING)
   enable_testing()
 endif ()
 
-# vtk_module_build() cannot add the project root as the module's folder, so the module is scanned
+# vtk_module_build() cannot add the project root as the umbrella module's folder, so it is scanned
 # from the driver's copy of vtk.module (named so that VTK's Remote/ glob does not find it twice).
 set(_aperture_module_file "${CMAKE_CURRENT_SOURCE_DIR}/CMake/Standalone/ApertureLighting.module")
 file(READ "${CMAKE_CURRENT_SOURCE_DIR}/vtk.module" _aperture_module_top)
@@ -78,11 +79,27 @@ if (APERTURELIGHTING_WRAP_PYTHON)
     CACHE STRING "Where the aperturelighting Python package goes, relative to the prefix")
 endif ()
 
+# The modules first, then the umbrella, which alone holds the tests (Testing/): scanned with
+# tests, a module two folders deep would take the same Testing/ folder for its own.
+set(APERTURELIGHTING_MODULE_FILES
+  "${CMAKE_CURRENT_SOURCE_DIR}/Core/vtk.module"
+  "${CMAKE_CURRENT_SOURCE_DIR}/IO/GDAL/vtk.module"
+  "${CMAKE_CURRENT_SOURCE_DIR}/IO/Image/vtk.module"
+  "${CMAKE_CURRENT_SOURCE_DIR}/IO/OpenEXR/vtk.module"
+  "${CMAKE_CURRENT_SOURCE_DIR}/Rendering/vtk.module")
+vtk_module_scan(
+  MODULE_FILES      ${APERTURELIGHTING_MODULE_FILES}
+  REQUEST_MODULES   VTK::ApertureLightingCore VTK::ApertureLightingIOGDAL
+                    VTK::ApertureLightingIOImage VTK::ApertureLightingIOOpenEXR
+                    VTK::ApertureLightingRendering
+  PROVIDES_MODULES  _aperture_parts
+  ENABLE_TESTS      OFF)
 vtk_module_scan(
   MODULE_FILES      "${_aperture_module_file}"
   REQUEST_MODULES   VTK::ApertureLighting
-  PROVIDES_MODULES  _aperture_modules
+  PROVIDES_MODULES  _aperture_umbrella
   ENABLE_TESTS      "${BUILD_TESTING}")
+set(_aperture_modules ${_aperture_parts} ${_aperture_umbrella})
 
 set(_aperture_cmake_destination "${CMAKE_INSTALL_LIBDIR}/cmake/ApertureLighting")
 vtk_module_build(
@@ -119,10 +136,24 @@ if (APERTURELIGHTING_WRAP_PYTHON)
     INSTALL_HEADERS     OFF
     BUILD_STATIC        OFF)
 
+  # The package's __init__ maps each class to its module (from the modules' public headers).
+  set(APERTURELIGHTING_PYTHON_CLASSES "")
+  foreach (_aperture_module IN LISTS _aperture_parts)
+    vtk_module_get_property("${_aperture_module}"
+      PROPERTY "INTERFACE_vtk_module_library_name" VARIABLE _library)
+    vtk_module_get_property("${_aperture_module}"
+      PROPERTY "INTERFACE_vtk_module_headers" VARIABLE _headers)
+    foreach (_header IN LISTS _headers)
+      get_filename_component(_class "${_header}" NAME_WE)
+      if (NOT _class STREQUAL "${_library}Module")
+        string(APPEND APERTURELIGHTING_PYTHON_CLASSES "    \"${_class}\": \"${_library}\",\n")
+      endif ()
+    endforeach ()
+  endforeach ()
   set(_aperture_python_package_dir
     "${CMAKE_BINARY_DIR}/${APERTURELIGHTING_PYTHON_DESTINATION}/aperturelighting")
-  configure_file("${CMAKE_CURRENT_SOURCE_DIR}/Wrapping/Python/aperturelighting/__init__.py"
-    "${_aperture_python_package_dir}/__init__.py" COPYONLY)
+  configure_file("${CMAKE_CURRENT_SOURCE_DIR}/Wrapping/Python/aperturelighting/__init__.py.in"
+    "${_aperture_python_package_dir}/__init__.py" @ONLY)
   install(FILES "${_aperture_python_package_dir}/__init__.py"
     DESTINATION "${APERTURELIGHTING_PYTHON_DESTINATION}/aperturelighting"
     COMPONENT python)
@@ -132,7 +163,33 @@ add_subdirectory(Examples)
 
 # CMake package, usable from the build tree and after installation.
 include(CMakePackageConfigHelpers)
-set(APERTURELIGHTING_VTK_COMPONENTS ${_aperture_vtk_components})
+# Each component (a module: Core for VTK::ApertureLightingCore) and the VTK modules it and the
+# modules it depends on link publicly.
+set(APERTURELIGHTING_COMPONENTS)
+set(APERTURELIGHTING_COMPONENT_VTK_MODULES "")
+foreach (_aperture_module IN LISTS _aperture_parts)
+  string(REPLACE "VTK::ApertureLighting" "" _component "${_aperture_module}")
+  list(APPEND APERTURELIGHTING_COMPONENTS "${_component}")
+  set(_vtk_modules)
+  set(_pending "${_aperture_module}")
+  while (_pending)
+    list(GET _pending 0 _module)
+    list(REMOVE_AT _pending 0)
+    vtk_module_get_property("${_module}" PROPERTY "INTERFACE_vtk_module_depends"
+      VARIABLE _depends)
+    foreach (_depend IN LISTS _depends)
+      if (_depend IN_LIST _aperture_parts)
+        list(APPEND _pending "${_depend}")
+      elseif (_depend MATCHES "^VTK::(.*)$")
+        list(APPEND _vtk_modules "${CMAKE_MATCH_1}")
+      endif ()
+    endforeach ()
+  endwhile ()
+  list(REMOVE_DUPLICATES _vtk_modules)
+  list(SORT _vtk_modules)
+  string(APPEND APERTURELIGHTING_COMPONENT_VTK_MODULES
+    "set(_aperture_vtk_modules_${_component} ${_vtk_modules})\n")
+endforeach ()
 configure_file("${CMAKE_CURRENT_SOURCE_DIR}/CMake/ApertureLightingConfig.cmake.in"
   "${CMAKE_BINARY_DIR}/${_aperture_cmake_destination}/ApertureLightingConfig.cmake" @ONLY)
 write_basic_package_version_file(

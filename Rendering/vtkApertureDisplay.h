@@ -26,13 +26,13 @@
 #ifndef vtkApertureDisplay_h
 #define vtkApertureDisplay_h
 
-#include "vtkApertureLightingModule.h" // For export macro
+#include "vtkApertureLightingRenderingModule.h" // For export macro
 
 #include <string>
 
 class vtkRenderWindow;
 
-class VTKAPERTURELIGHTING_EXPORT vtkApertureDisplay
+class VTKAPERTURELIGHTINGRENDERING_EXPORT vtkApertureDisplay
 {
 public:
   /**

@@ -43,7 +43,7 @@
 #ifndef vtkApertureLightingInterface_h
 #define vtkApertureLightingInterface_h
 
-#include "vtkApertureLightingModule.h" // For export macro
+#include "vtkApertureLightingRenderingModule.h" // For export macro
 #include "vtkObject.h"
 #include "vtkShader.h"       // For vtkShader::Type
 #include "vtkSmartPointer.h" // For vtkSmartPointer
@@ -66,7 +66,7 @@ class vtkShaderProgram;
 class vtkTextureObject;
 class vtkWindow;
 
-class VTKAPERTURELIGHTING_EXPORT vtkApertureLightingInterface : public vtkObject
+class VTKAPERTURELIGHTINGRENDERING_EXPORT vtkApertureLightingInterface : public vtkObject
 {
 public:
   static vtkApertureLightingInterface* New();

@@ -38,14 +38,14 @@
 #ifndef vtkApertureLightingMapper_h
 #define vtkApertureLightingMapper_h
 
-#include "vtkApertureLightingInterface.h" // For the forwarded settings
-#include "vtkApertureLightingModule.h"    // For export macro
-#include "vtkNew.h"                       // For vtkNew
+#include "vtkApertureLightingInterface.h"       // For the forwarded settings
+#include "vtkApertureLightingRenderingModule.h" // For export macro
+#include "vtkNew.h"                             // For vtkNew
 #include "vtkOpenGLPolyDataMapper.h"
 
 #include <map> // For std::map
 
-class VTKAPERTURELIGHTING_EXPORT vtkApertureLightingMapper : public vtkOpenGLPolyDataMapper
+class VTKAPERTURELIGHTINGRENDERING_EXPORT vtkApertureLightingMapper : public vtkOpenGLPolyDataMapper
 {
 public:
   static vtkApertureLightingMapper* New();

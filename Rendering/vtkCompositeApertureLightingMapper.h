@@ -27,13 +27,13 @@
 #ifndef vtkCompositeApertureLightingMapper_h
 #define vtkCompositeApertureLightingMapper_h
 
-#include "vtkApertureLightingModule.h" // For export macro
+#include "vtkApertureLightingRenderingModule.h" // For export macro
 #include "vtkCompositePolyDataMapper2.h"
 #include "vtkNew.h" // For vtkNew
 
 class vtkApertureLightingInterface;
 
-class VTKAPERTURELIGHTING_EXPORT vtkCompositeApertureLightingMapper
+class VTKAPERTURELIGHTINGRENDERING_EXPORT vtkCompositeApertureLightingMapper
   : public vtkCompositePolyDataMapper2
 {
 public:

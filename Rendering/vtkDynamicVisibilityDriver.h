@@ -50,7 +50,7 @@
 #ifndef vtkDynamicVisibilityDriver_h
 #define vtkDynamicVisibilityDriver_h
 
-#include "vtkApertureLightingModule.h" // For export macro
+#include "vtkApertureLightingRenderingModule.h" // For export macro
 #include "vtkObject.h"
 #include "vtkWeakPointer.h" // For vtkWeakPointer
 
@@ -63,7 +63,7 @@ class vtkRenderWindow;
 class vtkRenderWindowInteractor;
 class vtkRenderer;
 
-class VTKAPERTURELIGHTING_EXPORT vtkDynamicVisibilityDriver : public vtkObject
+class VTKAPERTURELIGHTINGRENDERING_EXPORT vtkDynamicVisibilityDriver : public vtkObject
 {
 public:
   static vtkDynamicVisibilityDriver* New();

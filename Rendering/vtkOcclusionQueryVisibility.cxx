@@ -11,53 +11,31 @@
 #include "vtkOcclusionQueryVisibility.h"
 
 #include "vtkApertureDisplay.h"
-#include "vtkApertureDistributedOccluders.h"
 #include "vtkApertureSurface.h"
-#include "vtkLightSphere.h"
 #include "vtkMortonOrder.h"
-#include "vtkRayCastVisibility.h"
 #include "vtkVisibilityCameraPass.h"
 #include "vtkVisibilityMatrixPasses.h"
 #include "vtkVisibilityScene.h"
 
-#include "vtkBitArray.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
-#include "vtkDoubleArray.h"
-#include "vtkFieldData.h"
-#include "vtkFloatArray.h"
-#include "vtkInformation.h"
-#include "vtkInformationVector.h"
-#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
-#include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkPointData.h"
-#include "vtkPolyData.h"
 #include "vtkProp3D.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkSMPTools.h"
-#include "vtkSmartPointer.h"
-#include "vtkUnsignedCharArray.h"
 #include "vtkWeakPointer.h"
 
 #include <algorithm>
-#include <array>
-#include <cfloat>
 #include <cmath>
 #include <cstring>
-#include <limits>
 
 vtkStandardNewMacro(vtkOcclusionQueryVisibility);
 
 namespace
 {
-using Directions = std::vector<std::array<double, 3>>;
-using Bits = vtkVisibilityMatrixPasses::Bits;
-
 // Directions handled between two progress events.
 constexpr size_t Chunk = 8;
 
@@ -95,30 +73,12 @@ void SortTriangles(const std::vector<float>& points, std::vector<std::uint32_t>&
   triangles.swap(sorted);
 }
 
-Directions AllDirections(vtkLightSphere* sphere)
-{
-  Directions directions(sphere->GetNumberOfDirections());
-  for (size_t j = 0; j < directions.size(); ++j)
-  {
-    sphere->GetDirection(static_cast<int>(j), directions[j].data());
-  }
-  return directions;
-}
-
-bool Bit(const Bits& bits, vtkIdType i)
-{
-  return (bits[i / 64] >> (i % 64)) & 1u;
-}
 }
 
 //------------------------------------------------------------------------------
 class vtkOcclusionQueryVisibility::vtkInternals
 {
 public:
-  // What everything below was computed for: the geometry and the settings.
-  std::vector<vtkMTimeType> Key;
-  vtkApertureSurface Receivers;
-  std::vector<vtkApertureSurface> Occluders;
   // The scene for OpenGL, built on demand: the receiving points first (the points tested), then
   // the vertices of the receivers (from ReceiverVertices on) and the occluders; triangles in
   // Morton order.
@@ -130,16 +90,9 @@ public:
   double Radius = 1.0;
   // Whether the scene went to the GPU in this update.
   bool Uploaded = false;
-  // One bit set of points per direction, in lightsphere order; point i's bits hold for its first
-  // Directions[i] directions.
-  std::vector<Bits> Computed;
-  std::vector<int> Directions;
-  // Vertex filtering: receiver triangles not seen yet, points that need visibility, and whether
-  // filtering goes on.
+  // Vertex filtering: receiver triangles not seen yet, and whether filtering goes on.
   std::vector<std::uint32_t> Unseen;
-  std::vector<unsigned char> Seen;
   bool Filtering = false;
-  vtkRayCastVisibility RayCast;
   // Weak: the window usually renders this filter's output, and a reference back would make a
   // cycle that nothing frees. When it goes, the GL objects made in its context go first.
   vtkWeakPointer<vtkRenderWindow> RenderWindow;
@@ -157,8 +110,6 @@ public:
 vtkOcclusionQueryVisibility::vtkOcclusionQueryVisibility()
   : Internals(new vtkInternals)
 {
-  this->SetNumberOfInputPorts(2);
-  this->SetController(vtkMultiProcessController::GetGlobalController());
   this->Internals->WindowGone->SetClientData(this);
   this->Internals->WindowGone->SetCallback(
     [](vtkObject* window, unsigned long, void* self, void*)
@@ -169,13 +120,9 @@ vtkOcclusionQueryVisibility::vtkOcclusionQueryVisibility()
 }
 
 //------------------------------------------------------------------------------
-vtkCxxSetObjectMacro(vtkOcclusionQueryVisibility, Controller, vtkMultiProcessController);
-
-//------------------------------------------------------------------------------
 vtkOcclusionQueryVisibility::~vtkOcclusionQueryVisibility()
 {
   this->SetRenderWindow(nullptr);
-  this->SetController(nullptr);
   this->ReleaseGraphicsResources(this->OwnWindow);
   if (this->OwnWindow)
   {
@@ -267,24 +214,6 @@ bool vtkOcclusionQueryVisibility::GetFilteringActive()
 }
 
 //------------------------------------------------------------------------------
-void vtkOcclusionQueryVisibility::AddOccluderConnection(vtkAlgorithmOutput* occluder)
-{
-  this->AddInputConnection(1, occluder);
-}
-
-//------------------------------------------------------------------------------
-int vtkOcclusionQueryVisibility::FillInputPortInformation(int port, vtkInformation* info)
-{
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  if (port == 1)
-  {
-    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
-    info->Set(vtkAlgorithm::INPUT_IS_REPEATABLE(), 1);
-  }
-  return 1;
-}
-
-//------------------------------------------------------------------------------
 void vtkOcclusionQueryVisibility::ReleaseGraphicsResources(vtkWindow* window)
 {
   vtkInternals& in = *this->Internals;
@@ -313,7 +242,7 @@ bool vtkOcclusionQueryVisibility::PrepareOpenGL(bool needStorage, std::string& e
   if (!in.GLScene.Set(glWindow, in.Points, in.Triangles, this->PolygonOffsetFactor,
         this->PolygonOffsetUnits, error) ||
     !in.MatrixPasses.SetReceivers(
-      in.Receivers.GetNumberOfPoints(), in.Radius, this->DepthResolution, error))
+      this->GetReceivers().GetNumberOfPoints(), in.Radius, this->DepthResolution, error))
   {
     error = "OpenGL failed: " + error + ".";
     return false;
@@ -361,7 +290,7 @@ vtkOpenGLRenderWindow* vtkOcclusionQueryVisibility::OpenGLWindow(
 void vtkOcclusionQueryVisibility::BuildOpenGLScene()
 {
   vtkInternals& in = *this->Internals;
-  const vtkApertureSurface& receivers = in.Receivers;
+  const vtkApertureSurface& receivers = this->GetReceivers();
   const vtkIdType n = receivers.GetNumberOfPoints();
   // The points tested come first: the receivers' vertices themselves when they are one per
   // vertex (nothing welded, nothing split), else copies of the receiving points' positions.
@@ -389,7 +318,7 @@ void vtkOcclusionQueryVisibility::BuildOpenGLScene()
     }
   };
   add(receivers);
-  for (const auto& s : in.Occluders)
+  for (const auto& s : this->GetOccluders())
   {
     add(s);
   }
@@ -505,9 +434,16 @@ std::vector<std::uint32_t> SceneCorners(const std::vector<std::uint32_t>& triang
 }
 
 //------------------------------------------------------------------------------
-bool vtkOcclusionQueryVisibility::UpdateSeen(std::string& error)
+// Vertex filtering: the triangles the camera now sees move from the unseen list to the points
+// needed.
+bool vtkOcclusionQueryVisibility::SelectPoints(std::string& error)
 {
   vtkInternals& in = *this->Internals;
+  if (!in.Filtering)
+  {
+    return true;
+  }
+  const vtkApertureSurface& receivers = this->GetReceivers();
   // 1. The camera pass: which of the triangles unseen so far the camera sees now, by the
   // paper's per-triangle queries with its backend or where storage buffers are missing (OpenGL
   // 3.3 suffices for them), by one draw into a storage buffer otherwise.
@@ -518,7 +454,7 @@ bool vtkOcclusionQueryVisibility::UpdateSeen(std::string& error)
   int width, height;
   ViewSize(in.ViewRenderer, width, height);
   float matrix[16];
-  if (!CameraClipMatrix(in.ViewRenderer->GetActiveCamera(), in.ViewProp, in.Receivers.Origin,
+  if (!CameraClipMatrix(in.ViewRenderer->GetActiveCamera(), in.ViewProp, receivers.Origin,
         in.Radius, width, height, matrix))
   {
     return true; // the scene is behind the camera: nothing is seen
@@ -527,7 +463,7 @@ bool vtkOcclusionQueryVisibility::UpdateSeen(std::string& error)
     this->Backend == OCCLUSION_QUERY || !vtkVisibilityScene::Missing(true).empty();
   std::vector<char> seen;
   if (!in.CameraPass.Visible(matrix, width, height,
-        SceneCorners(in.Receivers.Triangles, in.ReceiverVertices, in.Unseen), queries, seen, error))
+        SceneCorners(receivers.Triangles, in.ReceiverVertices, in.Unseen), queries, seen, error))
   {
     error = "OpenGL failed in the camera pass: " + error + ".";
     return false;
@@ -543,14 +479,15 @@ bool vtkOcclusionQueryVisibility::UpdateSeen(std::string& error)
     }
   }
   const bool stop = static_cast<double>(unseen.size()) <=
-    this->FilteringThreshold * static_cast<double>(in.Receivers.GetNumberOfTriangles());
+    this->FilteringThreshold * static_cast<double>(receivers.GetNumberOfTriangles());
+  std::vector<unsigned char>& needed = this->GetNeededPoints();
   for (size_t i = 0; i < in.Unseen.size(); ++i)
   {
     if (seen[i] || stop)
     {
       for (int c = 0; c < 3; ++c)
       {
-        in.Seen[in.Receivers.CornerPoints[3 * size_t(in.Unseen[i]) + c]] = 1;
+        needed[receivers.CornerPoints[3 * size_t(in.Unseen[i]) + c]] = 1;
       }
     }
   }
@@ -560,142 +497,84 @@ bool vtkOcclusionQueryVisibility::UpdateSeen(std::string& error)
 }
 
 //------------------------------------------------------------------------------
-// Visibility computed before for the same geometry and settings is kept: a higher level adds its
-// new directions, filtering adds the points it has newly seen.
-bool vtkOcclusionQueryVisibility::UpdateCache(
-  vtkPolyData* input, const std::vector<vtkPolyData*>& occluders, std::string& error)
+bool vtkOcclusionQueryVisibility::CheckSettings(std::string& error)
 {
-  vtkInternals& in = *this->Internals;
-  auto bitsOf = [](double value)
+  if (this->VertexFiltering && !this->Internals->ViewRenderer)
   {
-    vtkMTimeType bits = 0;
-    std::memcpy(&bits, &value, std::min(sizeof(bits), sizeof(value)));
-    return bits;
-  };
-  std::vector<vtkMTimeType> key = { input->GetMTime(), static_cast<vtkMTimeType>(this->Backend),
-    static_cast<vtkMTimeType>(this->DepthResolution), bitsOf(this->PolygonOffsetFactor),
-    bitsOf(this->PolygonOffsetUnits), bitsOf(this->RayOffset), bitsOf(this->FeatureAngle),
-    static_cast<vtkMTimeType>(this->VertexFiltering) };
-  for (vtkPolyData* occluder : occluders)
-  {
-    key.push_back(occluder->GetMTime());
-  }
-  if (key == in.Key)
-  {
-    return true;
-  }
-  in.Key.clear();
-  if (!vtkApertureSurface::SetScene(
-        input, occluders, this->FeatureAngle, this->RayOffset, in.Receivers, in.Occluders, error))
-  {
+    error = "Vertex filtering follows a camera: SetViewRenderer() is needed.";
     return false;
   }
-  const vtkIdType n = in.Receivers.GetNumberOfPoints();
-  in.SceneBuilt = false;
-  in.RayCast.ReleaseScene();
-  in.Computed.clear();
-  in.Directions.assign(n, 0);
-  // Without filtering every point is needed; with it, those of triangles not seen yet are not.
-  in.Seen.assign(n, 1);
-  in.Unseen.clear();
-  in.Filtering = this->VertexFiltering;
-  if (in.Filtering)
-  {
-    const vtkIdType triangles = in.Receivers.GetNumberOfTriangles();
-    in.Unseen.resize(triangles);
-    for (vtkIdType t = 0; t < triangles; ++t)
-    {
-      in.Unseen[t] = static_cast<std::uint32_t>(t);
-    }
-    for (const std::uint32_t point : in.Receivers.CornerPoints)
-    {
-      in.Seen[point] = 0;
-    }
-  }
-  in.Key = key;
   return true;
 }
 
 //------------------------------------------------------------------------------
-// Gives every point that needs them the directions of the level it lacks, by the backend.
-bool vtkOcclusionQueryVisibility::ComputeMissing(
-  const std::vector<std::array<double, 3>>& directions, bool& aborted, std::string& error)
+void vtkOcclusionQueryVisibility::AppendCacheKey(std::vector<vtkMTimeType>& key)
+{
+  this->Superclass::AppendCacheKey(key);
+  auto bitsOf = [](float value)
+  {
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &value, sizeof(bits));
+    return static_cast<vtkMTimeType>(bits);
+  };
+  key.insert(key.end(),
+    { static_cast<vtkMTimeType>(this->Backend), static_cast<vtkMTimeType>(this->DepthResolution),
+      bitsOf(this->PolygonOffsetFactor), bitsOf(this->PolygonOffsetUnits),
+      static_cast<vtkMTimeType>(this->VertexFiltering) });
+}
+
+//------------------------------------------------------------------------------
+// New surfaces: the OpenGL scene is built again, and vertex filtering starts with every receiver
+// triangle unseen and no point needed.
+void vtkOcclusionQueryVisibility::SurfacesChanged()
 {
   vtkInternals& in = *this->Internals;
-  const vtkIdType n = in.Receivers.GetNumberOfPoints();
-  const int k = static_cast<int>(directions.size());
-  if (in.Computed.size() < directions.size())
+  in.SceneBuilt = false;
+  in.Unseen.clear();
+  in.Filtering = this->VertexFiltering;
+  if (!in.Filtering)
   {
-    in.Computed.resize(k, Bits((n + 63) / 64, 0));
+    return;
   }
-  // The points that need directions, and the first direction one of them lacks.
-  std::vector<std::uint32_t> todo;
-  int first = k;
-  for (vtkIdType i = 0; i < n; ++i)
+  const vtkApertureSurface& receivers = this->GetReceivers();
+  in.Unseen.resize(receivers.GetNumberOfTriangles());
+  for (size_t t = 0; t < in.Unseen.size(); ++t)
   {
-    if (in.Seen[i] && in.Directions[i] < k)
-    {
-      todo.push_back(static_cast<std::uint32_t>(i));
-      first = std::min(first, in.Directions[i]);
-    }
+    in.Unseen[t] = static_cast<std::uint32_t>(t);
   }
-  aborted = false;
-  if (todo.empty())
+  std::vector<unsigned char>& needed = this->GetNeededPoints();
+  for (const std::uint32_t point : receivers.CornerPoints)
   {
-    return true;
+    needed[point] = 0;
   }
-  const Directions missing(directions.begin() + first, directions.end());
-  auto progress = [&](size_t done)
-  {
-    this->UpdateProgress(static_cast<double>(done) / missing.size());
-    return !this->GetAbortExecute();
-  };
-  std::vector<Bits> fresh;
-  bool ok = this->Backend == RAY_CAST ? this->CastRays(missing, todo, fresh, progress, error)
-                                      : this->RenderOpenGL(missing, todo, fresh, progress, error);
-  aborted = this->GetAbortExecute() != 0;
-  if (!ok || aborted)
-  {
-    return aborted;
-  }
-  // New bits are or-ed in: a point given a direction again gets the same bit.
-  for (size_t j = 0; j < fresh.size(); ++j)
-  {
-    Bits& bits = in.Computed[first + j];
-    for (size_t w = 0; w < bits.size(); ++w)
-    {
-      bits[w] |= fresh[j][w];
-    }
-  }
-  for (std::uint32_t i : todo)
-  {
-    in.Directions[i] = k;
-  }
-  this->NumberOfComputedPoints = static_cast<vtkIdType>(todo.size());
-  return true;
 }
 
 //------------------------------------------------------------------------------
-bool vtkOcclusionQueryVisibility::CastRays(const std::vector<std::array<double, 3>>& directions,
+bool vtkOcclusionQueryVisibility::LeavesPointsOut()
+{
+  return this->VertexFiltering;
+}
+
+//------------------------------------------------------------------------------
+// RAY_CAST is the superclass's computation; NumberOfDepthPasses counts its directions.
+bool vtkOcclusionQueryVisibility::ComputeDirections(const Directions& directions,
   const std::vector<std::uint32_t>& points, std::vector<Bits>& visible,
   const std::function<bool(size_t)>& progress, std::string& error)
 {
-  vtkInternals& in = *this->Internals;
-  // The Embree scene lasts as long as the geometry: filtering's later updates reuse it.
-  if (!in.RayCast.HasScene() && !in.RayCast.SetScene(in.Receivers, in.Occluders, error))
+  if (this->Backend != RAY_CAST)
   {
-    return false;
+    return this->RenderOpenGL(directions, points, visible, progress, error);
   }
   auto counted = [&](size_t done)
   {
     this->NumberOfDepthPasses = static_cast<int>(done);
     return progress(done);
   };
-  return in.RayCast.Cast(directions, points, visible, counted, error);
+  return this->Superclass::ComputeDirections(directions, points, visible, counted, error);
 }
 
 //------------------------------------------------------------------------------
-bool vtkOcclusionQueryVisibility::RenderOpenGL(const std::vector<std::array<double, 3>>& directions,
+bool vtkOcclusionQueryVisibility::RenderOpenGL(const Directions& directions,
   const std::vector<std::uint32_t>& points, std::vector<Bits>& visible,
   const std::function<bool(size_t)>& progress, std::string& error)
 {
@@ -706,7 +585,8 @@ bool vtkOcclusionQueryVisibility::RenderOpenGL(const std::vector<std::array<doub
     return false;
   }
   const std::vector<std::uint32_t>* subset =
-    static_cast<vtkIdType>(points.size()) == in.Receivers.GetNumberOfPoints() ? nullptr : &points;
+    static_cast<vtkIdType>(points.size()) == this->GetReceivers().GetNumberOfPoints() ? nullptr
+                                                                                      : &points;
   bool ok = true;
   if (this->Backend == DEPTH_COMPARE)
   {
@@ -732,221 +612,30 @@ bool vtkOcclusionQueryVisibility::RenderOpenGL(const std::vector<std::array<doub
   return ok;
 }
 
-namespace
-{
-// Output point o sees direction j when its receiving point is above its tangent plane and has
-// its bit set; `cosine` gets n . l.
-struct Sees
-{
-  const vtkApertureSurface& Receivers;
-  const std::vector<vtkIdType>& Points; // each output point's receiving point, or -1
-  const std::vector<int>& Done;         // directions computed per receiving point
-  const std::vector<Bits>& Computed;
-  const std::vector<std::array<double, 3>>& Directions;
-
-  bool operator()(vtkIdType o, int j, double& cosine) const
-  {
-    const vtkIdType i = this->Points[o];
-    if (i < 0 || !this->Receivers.Valid[i] || j >= this->Done[i])
-    {
-      return false;
-    }
-    const float* n = this->Receivers.GetNormal(i);
-    const auto& l = this->Directions[j];
-    cosine = n[0] * l[0] + n[1] * l[1] + n[2] * l[2];
-    return cosine > 0.0 && Bit(this->Computed[j], i);
-  }
-};
-
-// M_oj = max(n . l_j, 0) where output point o sees direction j.
-vtkSmartPointer<vtkFloatArray> VisibilityArray(const Sees& sees, vtkIdType m, int k)
-{
-  auto visibility = vtkSmartPointer<vtkFloatArray>::New();
-  visibility->SetName("Visibility");
-  visibility->SetNumberOfComponents(k);
-  visibility->SetNumberOfTuples(m);
-  float* values = visibility->GetPointer(0);
-  vtkSMPTools::For(0, m,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      for (vtkIdType o = begin; o < end; ++o)
-      {
-        for (int j = 0; j < k; ++j)
-        {
-          double c = 0.0;
-          values[o * k + j] = sees(o, j, c) ? static_cast<float>(c) : 0.0f;
-        }
-      }
-    });
-  return visibility;
-}
-
-// The raw visibility, one bit per output point and direction.
-vtkSmartPointer<vtkBitArray> VisibilityBitsArray(const Sees& sees, vtkIdType m, int k)
-{
-  auto bits = vtkSmartPointer<vtkBitArray>::New();
-  bits->SetName("VisibilityBits");
-  bits->SetNumberOfComponents(k);
-  bits->SetNumberOfTuples(m);
-  for (vtkIdType o = 0; o < m; ++o)
-  {
-    for (int j = 0; j < k; ++j)
-    {
-      double c = 0.0;
-      bits->SetValue(o * k + j, sees(o, j, c));
-    }
-  }
-  return bits;
-}
-
-// Which output points have their visibility yet (vertex filtering: those of triangles not seen
-// have none).
-vtkSmartPointer<vtkUnsignedCharArray> ComputedArray(const Sees& sees, vtkIdType m, int k)
-{
-  auto done = vtkSmartPointer<vtkUnsignedCharArray>::New();
-  done->SetName("VisibilityComputed");
-  done->SetNumberOfTuples(m);
-  for (vtkIdType o = 0; o < m; ++o)
-  {
-    done->SetValue(o, sees.Points[o] >= 0 && sees.Done[sees.Points[o]] >= k ? 1 : 0);
-  }
-  return done;
-}
-}
-
-//------------------------------------------------------------------------------
-// The output: the input's points (split where creases split them) with the arrays, and the
-// lightsphere in the field data.
-void vtkOcclusionQueryVisibility::WriteOutputs(vtkPolyData* input, vtkPolyData* output,
-  vtkLightSphere* sphere, const std::vector<std::array<double, 3>>& directions)
-{
-  vtkInternals& in = *this->Internals;
-  const vtkApertureSurface& receivers = in.Receivers;
-  const int k = static_cast<int>(directions.size());
-  std::vector<vtkIdType> points;
-  receivers.MakeOutput(input, output, points);
-  const vtkIdType m = static_cast<vtkIdType>(points.size());
-  vtkPointData* pd = output->GetPointData();
-  receivers.AddComputedNormals(pd, points);
-  const Sees sees{ receivers, points, in.Directions, in.Computed, directions };
-  if (this->ComputeVisibility)
-  {
-    pd->AddArray(VisibilityArray(sees, m, k));
-  }
-  if (this->ComputeVisibilityBits)
-  {
-    pd->AddArray(VisibilityBitsArray(sees, m, k));
-  }
-  if (this->VertexFiltering)
-  {
-    pd->AddArray(ComputedArray(sees, m, k));
-  }
-  vtkSmartPointer<vtkDoubleArray> lightDirections;
-  lightDirections.TakeReference(sphere->NewDirections());
-  vtkSmartPointer<vtkDoubleArray> lightWeights;
-  lightWeights.TakeReference(sphere->NewWeights());
-  vtkNew<vtkFieldData> fields;
-  fields->ShallowCopy(input->GetFieldData());
-  fields->AddArray(lightDirections);
-  fields->AddArray(lightWeights);
-  output->SetFieldData(fields);
-}
-
 //------------------------------------------------------------------------------
 int vtkOcclusionQueryVisibility::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkInternals& in = *this->Internals;
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
   this->NumberOfDepthPasses = 0;
-  this->NumberOfComputedPoints = 0;
   this->UploadedBytes = 0;
-  in.Uploaded = false;
-  // A distributed run: the other ranks' surfaces occlude too (collective, before any check).
-  vtkSmartPointer<vtkPolyData> remote;
-  if (vtkApertureDistributedOccluders::GatherForPiece(
-        this->Controller, outputVector->GetInformationObject(0), input, remote) &&
-    (!input || input->GetNumberOfPoints() == 0))
-  {
-    output->Initialize(); // an empty piece
-    return 1;
-  }
-  if (!input || input->GetNumberOfPoints() == 0)
-  {
-    vtkErrorMacro("The input is empty: there are no points to compute visibility for.");
-    return 0;
-  }
-  if (this->VertexFiltering && !in.ViewRenderer)
-  {
-    vtkErrorMacro("Vertex filtering follows a camera: SetViewRenderer() is needed.");
-    return 0;
-  }
-
-  // 1. The surfaces, and what is kept of earlier updates.
-  std::string error;
-  if (!this->UpdateCache(
-        input, vtkApertureDistributedOccluders::Occluders(inputVector[1], remote), error))
-  {
-    vtkErrorMacro(<< error);
-    return 0;
-  }
-  // 2. Vertex filtering: the points of the triangles the camera now sees.
-  if (in.Filtering && !this->UpdateSeen(error))
-  {
-    vtkErrorMacro(<< error);
-    in.Key.clear();
-    return 0;
-  }
-  // 3. The directions of the level that points lack, by the backend.
-  vtkNew<vtkLightSphere> sphere;
-  sphere->SetLevel(this->Level);
-  const Directions directions = AllDirections(sphere);
-  this->UpdateProgress(0.0);
-  bool aborted = false;
-  if (!this->ComputeMissing(directions, aborted, error))
-  {
-    vtkErrorMacro(<< error);
-    in.Key.clear();
-    return 0;
-  }
-  if (aborted)
-  {
-    output->Initialize();
-    return 1;
-  }
-  // 4. The output, and a word on points left out.
-  this->WriteOutputs(input, output, sphere, directions);
-  if (in.Receivers.NonFinitePoints > 0)
-  {
-    vtkWarningMacro(<< in.Receivers.NonFinitePoints
-                    << " point(s) are not finite (NaN or infinite); they see nothing, and no "
-                       "cell that uses them casts shadows.");
-  }
-  return 1;
+  this->Internals->Uploaded = false;
+  return this->Superclass::RequestData(request, inputVector, outputVector);
 }
 
 //------------------------------------------------------------------------------
 void vtkOcclusionQueryVisibility::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Level: " << this->Level << "\n";
-  os << indent << "Controller: " << this->Controller << "\n";
   os << indent << "Backend: " << this->GetBackendAsString() << "\n";
   os << indent << "DepthResolution: " << this->DepthResolution << "\n";
   os << indent << "PolygonOffsetFactor: " << this->PolygonOffsetFactor << "\n";
   os << indent << "PolygonOffsetUnits: " << this->PolygonOffsetUnits << "\n";
-  os << indent << "RayOffset: " << this->RayOffset << "\n";
-  os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
-  os << indent << "ComputeVisibility: " << (this->ComputeVisibility ? "On" : "Off") << "\n";
-  os << indent << "ComputeVisibilityBits: " << (this->ComputeVisibilityBits ? "On" : "Off") << "\n";
   os << indent << "VertexFiltering: " << (this->VertexFiltering ? "On" : "Off") << "\n";
   os << indent << "FilteringThreshold: " << this->FilteringThreshold << "\n";
   os << indent << "ViewRenderer: " << this->Internals->ViewRenderer.GetPointer() << "\n";
   os << indent << "ViewProp: " << this->Internals->ViewProp.GetPointer() << "\n";
   os << indent << "RenderWindow: " << this->GetRenderWindow() << "\n";
   os << indent << "NumberOfDepthPasses: " << this->NumberOfDepthPasses << "\n";
-  os << indent << "NumberOfComputedPoints: " << this->NumberOfComputedPoints << "\n";
   os << indent << "NumberOfUnseenTriangles: " << this->Internals->Unseen.size() << "\n";
   os << indent << "FilteringActive: " << (this->Internals->Filtering ? "Yes" : "No") << "\n";
   os << indent << "UploadedBytes: " << this->UploadedBytes << "\n";

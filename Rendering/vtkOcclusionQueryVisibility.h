@@ -29,7 +29,9 @@
  * input is never modified. The surface is taken as vtkAperturePrecompute takes it: points at the
  * same position welded, creases above FeatureAngle splitting normals (and the output's points,
  * where the input shares one across a crease), and for RAY_CAST its contact and self-hit rules.
- * Input port 1 takes occluders (repeatable): polydata that cast shadows but get no output.
+ * Input port 1 takes occluders (repeatable): polydata that cast shadows but get no output. The
+ * settings and outputs shared with the ray-cast filter of the core, vtkLightSphereVisibility,
+ * are its superclass's.
  *
  * Backends:
  * - OCCLUSION_QUERY, the paper's method: per direction, an orthographic depth render with
@@ -41,7 +43,8 @@
  *   point's bits in a shader storage buffer (OpenGL 4.3);
  * - RAY_CAST: Embree rays from each point (offset along its normal by RayOffset times its mean
  *   edge length, as vtkAperturePrecompute casts them), for machines without OpenGL and as the
- *   reference.
+ *   reference: vtkLightSphereVisibility's computation, which needs neither OpenGL nor this
+ *   module.
  *
  * The OpenGL backends use the render window given to SetRenderWindow() (sharing its context),
  * or else their own off-screen window. The directions of a level are a prefix of those of the
@@ -70,14 +73,14 @@
  * OpenGL feature, or no OpenGL context at all, is an error that names what is missing; RAY_CAST
  * still works.
  *
- * @sa vtkLightSphere vtkAperturePrecompute vtkDynamicVisibilityDriver
+ * @sa vtkLightSphereVisibility vtkLightSphere vtkAperturePrecompute vtkDynamicVisibilityDriver
  */
 
 #ifndef vtkOcclusionQueryVisibility_h
 #define vtkOcclusionQueryVisibility_h
 
-#include "vtkApertureLightingModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkApertureLightingRenderingModule.h" // For export macro
+#include "vtkLightSphereVisibility.h"
 
 #include <array>      // For std::array
 #include <cstdint>    // For std::uint64_t
@@ -86,19 +89,18 @@
 #include <string>     // For std::string
 #include <vector>     // For std::vector
 
-class vtkLightSphere;
-class vtkMultiProcessController;
 class vtkOpenGLRenderWindow;
 class vtkProp3D;
 class vtkRenderWindow;
 class vtkRenderer;
 class vtkWindow;
 
-class VTKAPERTURELIGHTING_EXPORT vtkOcclusionQueryVisibility : public vtkPolyDataAlgorithm
+class VTKAPERTURELIGHTINGRENDERING_EXPORT vtkOcclusionQueryVisibility
+  : public vtkLightSphereVisibility
 {
 public:
   static vtkOcclusionQueryVisibility* New();
-  vtkTypeMacro(vtkOcclusionQueryVisibility, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkOcclusionQueryVisibility, vtkLightSphereVisibility);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum Backends
@@ -107,14 +109,6 @@ public:
     DEPTH_COMPARE = 1,
     RAY_CAST = 2
   };
-
-  ///@{
-  /**
-   * Lightsphere level, clamped to [0, 4]: k = 6, 18, 66, 258, 1026 directions. Default 2.
-   */
-  vtkSetClampMacro(Level, int, 0, 4);
-  vtkGetMacro(Level, int);
-  ///@}
 
   ///@{
   /**
@@ -146,36 +140,6 @@ public:
   vtkGetMacro(PolygonOffsetFactor, float);
   vtkSetMacro(PolygonOffsetUnits, float);
   vtkGetMacro(PolygonOffsetUnits, float);
-  ///@}
-
-  ///@{
-  /**
-   * RAY_CAST: rays start this many mean edge lengths above their point, along its normal.
-   * Clamped to [0, 1]. Default 0.001.
-   */
-  vtkSetClampMacro(RayOffset, double, 0.0, 1.0);
-  vtkGetMacro(RayOffset, double);
-  ///@}
-
-  ///@{
-  /**
-   * Creases split the points' normals and visibility above this angle (degrees), as in
-   * vtkAperturePrecompute. Default 60.
-   */
-  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
-  vtkGetMacro(FeatureAngle, double);
-  ///@}
-
-  ///@{
-  /**
-   * Which arrays to produce: `Visibility` (default on) and `VisibilityBits` (default off).
-   */
-  vtkSetMacro(ComputeVisibility, bool);
-  vtkGetMacro(ComputeVisibility, bool);
-  vtkBooleanMacro(ComputeVisibility, bool);
-  vtkSetMacro(ComputeVisibilityBits, bool);
-  vtkGetMacro(ComputeVisibilityBits, bool);
-  vtkBooleanMacro(ComputeVisibilityBits, bool);
   ///@}
 
   ///@{
@@ -220,22 +184,11 @@ public:
   ///@}
 
   /**
-   * Adds an occluder on port 1: it casts shadows but gets no visibility.
-   */
-  void AddOccluderConnection(vtkAlgorithmOutput* occluder);
-
-  /**
    * Depth passes (OpenGL backends; DEPTH_COMPARE renders a direction and its opposite in one
    * pass) or directions cast (RAY_CAST) in the last update; directions reused from an earlier
    * update are not counted.
    */
   vtkGetMacro(NumberOfDepthPasses, int);
-
-  /**
-   * Points given new directions in the last update (all of them without filtering, when
-   * anything was computed).
-   */
-  vtkGetMacro(NumberOfComputedPoints, vtkIdType);
 
   /**
    * Receiver triangles the camera has not seen yet (vertex filtering), and whether filtering is
@@ -254,59 +207,42 @@ public:
    */
   void ReleaseGraphicsResources(vtkWindow* window);
 
-  ///@{
-  /**
-   * The controller of a distributed run (default: the global one). When the update asks for one
-   * of several pieces and the controller has several processes, every other rank's polygons and
-   * strips occlude this rank's points too (with every backend), so that each piece gets the
-   * serial matrix; every rank must then update the filter, and an empty piece gives an empty
-   * output.
-   */
-  virtual void SetController(vtkMultiProcessController* controller);
-  vtkGetObjectMacro(Controller, vtkMultiProcessController);
-  ///@}
-
 protected:
   vtkOcclusionQueryVisibility();
   ~vtkOcclusionQueryVisibility() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
-  int Level = 2;
+  ///@{
+  /**
+   * The backends and vertex filtering on vtkLightSphereVisibility's computation.
+   */
+  bool CheckSettings(std::string& error) override;
+  void AppendCacheKey(std::vector<vtkMTimeType>& key) override;
+  void SurfacesChanged() override;
+  bool SelectPoints(std::string& error) override;
+  bool ComputeDirections(const Directions& directions, const std::vector<std::uint32_t>& points,
+    std::vector<Bits>& visible, const std::function<bool(size_t done)>& progress,
+    std::string& error) override;
+  bool LeavesPointsOut() override;
+  ///@}
+
   int Backend = DEPTH_COMPARE;
   int DepthResolution = 1024;
   float PolygonOffsetFactor = 1.0f;
   float PolygonOffsetUnits = 1.0f;
-  double RayOffset = 0.001;
-  double FeatureAngle = 60.0;
-  bool ComputeVisibility = true;
-  bool ComputeVisibilityBits = false;
   bool VertexFiltering = false;
   double FilteringThreshold = 0.05;
   int NumberOfDepthPasses = 0;
-  vtkIdType NumberOfComputedPoints = 0;
   vtkIdType UploadedBytes = 0;
 
 private:
   vtkOcclusionQueryVisibility(const vtkOcclusionQueryVisibility&) = delete;
   void operator=(const vtkOcclusionQueryVisibility&) = delete;
 
-  // The surfaces of this update, keeping what earlier ones computed for the same geometry.
-  bool UpdateCache(
-    vtkPolyData* input, const std::vector<vtkPolyData*>& occluders, std::string& error);
-  // Moves the triangles the camera now sees from the unseen list to the seen points.
-  bool UpdateSeen(std::string& error);
-  // The directions of the level that needed points lack, by the backend.
-  bool ComputeMissing(
-    const std::vector<std::array<double, 3>>& directions, bool& aborted, std::string& error);
-  bool CastRays(const std::vector<std::array<double, 3>>& directions,
-    const std::vector<std::uint32_t>& points, std::vector<std::vector<std::uint64_t>>& visible,
-    const std::function<bool(size_t)>& progress, std::string& error);
-  bool RenderOpenGL(const std::vector<std::array<double, 3>>& directions,
-    const std::vector<std::uint32_t>& points, std::vector<std::vector<std::uint64_t>>& visible,
-    const std::function<bool(size_t)>& progress, std::string& error);
+  bool RenderOpenGL(const Directions& directions, const std::vector<std::uint32_t>& points,
+    std::vector<Bits>& visible, const std::function<bool(size_t)>& progress, std::string& error);
   // The OpenGL window and the scene on it; false with an error when there is none.
   bool PrepareOpenGL(bool needStorage, std::string& error);
   // The window whose context the passes use (current), the caller's or one of our own, with
@@ -314,13 +250,10 @@ private:
   vtkOpenGLRenderWindow* OpenGLWindow(bool needStorage, std::string& error);
   // The points, vertices and triangles the OpenGL passes draw.
   void BuildOpenGLScene();
-  void WriteOutputs(vtkPolyData* input, vtkPolyData* output, vtkLightSphere* sphere,
-    const std::vector<std::array<double, 3>>& directions);
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;
   vtkRenderWindow* OwnWindow = nullptr;
-  vtkMultiProcessController* Controller = nullptr;
 };
 
 #endif

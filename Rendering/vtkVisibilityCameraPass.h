@@ -22,8 +22,8 @@
 #ifndef vtkVisibilityCameraPass_h
 #define vtkVisibilityCameraPass_h
 
-#include "vtkApertureLightingModule.h" // For export macro
-#include "vtkSmartPointer.h"           // For vtkSmartPointer
+#include "vtkApertureLightingRenderingModule.h" // For export macro
+#include "vtkSmartPointer.h"                    // For vtkSmartPointer
 
 #include <cstdint>
 #include <string>
@@ -37,7 +37,7 @@ class vtkTextureObject;
 class vtkVisibilityScene;
 class vtkWindow;
 
-class VTKAPERTURELIGHTING_EXPORT vtkVisibilityCameraPass
+class VTKAPERTURELIGHTINGRENDERING_EXPORT vtkVisibilityCameraPass
 {
 public:
   explicit vtkVisibilityCameraPass(vtkVisibilityScene& scene);

@@ -32,8 +32,8 @@
 #ifndef vtkVisibilityMatrixPasses_h
 #define vtkVisibilityMatrixPasses_h
 
-#include "vtkApertureLightingModule.h" // For export macro
-#include "vtkSmartPointer.h"           // For vtkSmartPointer
+#include "vtkApertureLightingRenderingModule.h" // For export macro
+#include "vtkSmartPointer.h"                    // For vtkSmartPointer
 #include "vtkType.h"
 
 #include <array>
@@ -51,7 +51,7 @@ class vtkTextureObject;
 class vtkVisibilityScene;
 class vtkWindow;
 
-class VTKAPERTURELIGHTING_EXPORT vtkVisibilityMatrixPasses
+class VTKAPERTURELIGHTINGRENDERING_EXPORT vtkVisibilityMatrixPasses
 {
 public:
   explicit vtkVisibilityMatrixPasses(vtkVisibilityScene& scene);

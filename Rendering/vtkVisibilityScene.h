@@ -30,9 +30,9 @@
 #ifndef vtkVisibilityScene_h
 #define vtkVisibilityScene_h
 
-#include "vtkApertureLightingModule.h" // For export macro
-#include "vtkOpenGLState.h"            // For PassState's scoped state
-#include "vtkSmartPointer.h"           // For vtkSmartPointer
+#include "vtkApertureLightingRenderingModule.h" // For export macro
+#include "vtkOpenGLState.h"                     // For PassState's scoped state
+#include "vtkSmartPointer.h"                    // For vtkSmartPointer
 #include "vtkType.h"
 
 #include <cstdint>
@@ -48,7 +48,7 @@ class vtkShaderProgram;
 class vtkTextureObject;
 class vtkWindow;
 
-class VTKAPERTURELIGHTING_EXPORT vtkVisibilityScene
+class VTKAPERTURELIGHTINGRENDERING_EXPORT vtkVisibilityScene
 {
 public:
   vtkVisibilityScene() = default;

@@ -1,8 +1,7 @@
 # Fails when a C++ source of the project differs from what clang-format makes of it with the
 # project's .clang-format (VTK 9.1's style). `make format` applies it.
 file(GLOB_RECURSE sources
-  "${SOURCE_DIR}/Common/*.h" "${SOURCE_DIR}/Common/*.cxx"
-  "${SOURCE_DIR}/Filters/*.h" "${SOURCE_DIR}/Filters/*.cxx"
+  "${SOURCE_DIR}/Core/*.h" "${SOURCE_DIR}/Core/*.cxx"
   "${SOURCE_DIR}/IO/*.h" "${SOURCE_DIR}/IO/*.cxx"
   "${SOURCE_DIR}/Rendering/*.h" "${SOURCE_DIR}/Rendering/*.cxx"
   "${SOURCE_DIR}/Testing/*.h" "${SOURCE_DIR}/Testing/*.cxx"

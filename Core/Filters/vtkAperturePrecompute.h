@@ -1,0 +1,345 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    vtkAperturePrecompute.h
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+/**
+ * @class   vtkAperturePrecompute
+ * @brief   per-vertex or per-texel visibility caps for ambient aperture lighting
+ *
+ * vtkAperturePrecompute is the preprocessing stage of ambient aperture lighting (Oat & Sander
+ * 2007). For every point of a surface it casts NumberOfRays rays over the hemisphere around the
+ * point's normal with Embree and summarises what it sees as a spherical cap, the aperture:
+ *
+ * - `BentNormal` (float, 3 components, unit, world space): the normalised mean unoccluded
+ *   direction V = normalize(∫ V(p, ω) ω dω), uniform over solid angle as in the paper;
+ * - `ApertureRadius` (float, radians in [0, π/2]): r = acos(1 − A/2π), A the visible solid angle;
+ * - optionally `AmbientOcclusion` (float in [0, 1]): the cosine-weighted visible fraction
+ *   (1/π) ∫ V(p, ω) max(n·ω, 0) dω, the usual ambient occlusion, which is 1 for an open plane.
+ *
+ * Input port 0 takes
+ * - a vtkPolyData: polygons and triangle strips cast and receive rays; vertices and lines are
+ *   kept in the output but neither cast nor receive (points used only by them get an open
+ *   aperture, r = π/2, around their normal, or +z without one);
+ * - a vtkImageData height field (the per-texel mode): a 2D grid whose point scalars (the input
+ *   array to process) are heights. Grid point (i, j) sits at the image's physical position of
+ *   (i, j, 0) raised by HeightScale × height along the grid's third axis; the surface is
+ *   triangulated as (i,j)(i+1,j)(i+1,j+1) and (i,j)(i+1,j+1)(i,j+1). The output is the same grid
+ *   with one cap per grid point, ready to be used as a texture. By default its visibility comes
+ *   from horizon sweeps, not rays (see SetMethod()), and the filter streams: an update extent
+ *   smaller than the grid is computed from that extent grown by MaximumDistance, so that a
+ *   large DEM goes through in tiles whose results equal the whole grid's;
+ * - a composite dataset of vtkPolyData: every leaf occludes every other and each leaf gets its
+ *   arrays.
+ *
+ * Input port 1 (optional, repeatable, AddOccluderConnection()) takes extra vtkPolyData
+ * occluders that cast shadows but get no output.
+ *
+ * Real meshes (see vtkApertureSurface for how): points at the same position are one surface
+ * point, with one aperture, whatever the file's texture seams split; triangles are wound
+ * consistently; a crease (an edge whose faces' normals differ by more than FeatureAngle, or
+ * given normals further apart) gives each side its own normal and aperture. When the input
+ * shares a point across a crease the output splits it, as vtkPolyDataNormals does, copying its
+ * point data; otherwise the output has the input's points and cells. MaximumEdgeLength > 0
+ * refines the surface first: the output is then the refined surface, its point data
+ * interpolated. A point lying on another surface sees the open half of its hemisphere (contact),
+ * and folded or sliver triangles of its own do not close it (self-hits): see vtkApertureRayScene.
+ *
+ * The output has the input's type and keeps every input array; the input is never modified. When
+ * the input has no usable point normals, the normals that were used are added as `Normals`
+ * (the normalised sums of the unit normals of each side's triangles; the +z side of the grid for
+ * height fields).
+ *
+ * Sampling is deterministic: the Hammersley set of NumberOfRays points, uniform over the
+ * hemisphere's solid angle, shifted per point by a Cranley-Patterson rotation derived from Seed
+ * and the point's position (SetSamplingToRandom() draws independent uniform samples instead, for
+ * comparison). Rays start RayOffset × (mean length of the point's edges) above the point along its
+ * normal, at least far enough to clear single-precision rounding, and stop at MaximumDistance
+ * when LimitDistance is on.
+ * Geometry is translated to a local origin before it reaches Embree, so UTM-sized coordinates
+ * (1e5 to 1e7) keep their precision.
+ *
+ * Rays are traced in packets of 16 (rtcOccluded16) over blocks of points with vtkSMPTools, in
+ * batches of about a million rays; progress is reported and AbortExecute checked between
+ * batches. An aborted run produces an empty output.
+ *
+ * Points that are not finite, or whose normal is undefined, get a closed aperture (r = 0) with
+ * BentNormal (0, 0, 1) and one warning. Empty input, input without polygons or strips, a cell
+ * with a point id outside the points, image data that is not a 2D grid with one-component
+ * scalars, and Embree failures are errors.
+ *
+ * @sa vtkSphericalCap vtkApertureLightingMapper
+ */
+
+#ifndef vtkAperturePrecompute_h
+#define vtkAperturePrecompute_h
+
+#include "vtkApertureLightingCoreModule.h" // For export macro
+#include "vtkPassInputTypeAlgorithm.h"
+
+#include <string> // For std::string
+
+class vtkMultiProcessController;
+
+class VTKAPERTURELIGHTINGCORE_EXPORT vtkAperturePrecompute : public vtkPassInputTypeAlgorithm
+{
+public:
+  static vtkAperturePrecompute* New();
+  vtkTypeMacro(vtkAperturePrecompute, vtkPassInputTypeAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Extra occluders (vtkPolyData) on input port 1: they cast shadows but get no output.
+   */
+  void AddOccluderConnection(vtkAlgorithmOutput* output);
+  void AddOccluderData(vtkDataObject* data);
+  void RemoveAllOccluders();
+  ///@}
+
+  ///@{
+  /**
+   * Rays per point, in [1, 65536]. Default 256.
+   */
+  vtkSetClampMacro(NumberOfRays, int, 1, 65536);
+  vtkGetMacro(NumberOfRays, int);
+  ///@}
+
+  ///@{
+  /**
+   * Whether visibility is searched only up to MaximumDistance: rays stop there and horizons
+   * ignore the ground beyond, for local occlusion (and so that a height field streams in tiles
+   * of bounded overlap). Default off: occluders count however far they are.
+   */
+  vtkSetMacro(LimitDistance, bool);
+  vtkGetMacro(LimitDistance, bool);
+  vtkBooleanMacro(LimitDistance, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The distance (world units) visibility is searched to when LimitDistance is on; ignored when
+   * it is off. Default VTK_DOUBLE_MAX.
+   */
+  vtkSetClampMacro(MaximumDistance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumDistance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Ray start offset along the normal, relative to the mean length of the point's edges (the
+   * grid spacing for height fields), in [0, 1]. Default 0.001.
+   */
+  vtkSetClampMacro(RayOffset, double, 0.0, 1.0);
+  vtkGetMacro(RayOffset, double);
+  ///@}
+
+  ///@{
+  /**
+   * Seed of the per-point sample rotations (or of the random samples). Default 0.
+   */
+  vtkSetMacro(Seed, int);
+  vtkGetMacro(Seed, int);
+  ///@}
+
+  enum Sampling
+  {
+    STRATIFIED = 0,
+    RANDOM = 1
+  };
+
+  ///@{
+  /**
+   * STRATIFIED (default): a rotated Hammersley set; RANDOM: independent uniform samples.
+   */
+  vtkSetClampMacro(Sampling, int, STRATIFIED, RANDOM);
+  vtkGetMacro(Sampling, int);
+  void SetSamplingToStratified() { this->SetSampling(STRATIFIED); }
+  void SetSamplingToRandom() { this->SetSampling(RANDOM); }
+  ///@}
+
+  ///@{
+  /**
+   * Height field mode: heights are multiplied by this factor. Default 1.
+   */
+  vtkSetMacro(HeightScale, double);
+  vtkGetMacro(HeightScale, double);
+  ///@}
+
+  ///@{
+  /**
+   * Also write the cosine-weighted visible fraction. Default off.
+   */
+  vtkSetMacro(ComputeAmbientOcclusion, bool);
+  vtkGetMacro(ComputeAmbientOcclusion, bool);
+  vtkBooleanMacro(ComputeAmbientOcclusion, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Names of the output arrays. Defaults: "BentNormal", "ApertureRadius", "AmbientOcclusion".
+   */
+  vtkSetStdStringFromCharMacro(BentNormalArrayName);
+  vtkGetCharFromStdStringMacro(BentNormalArrayName);
+  vtkSetStdStringFromCharMacro(ApertureRadiusArrayName);
+  vtkGetCharFromStdStringMacro(ApertureRadiusArrayName);
+  vtkSetStdStringFromCharMacro(AmbientOcclusionArrayName);
+  vtkGetCharFromStdStringMacro(AmbientOcclusionArrayName);
+  ///@}
+
+  ///@{
+  /**
+   * Creases: where the normals of two faces sharing an edge differ by more than this angle
+   * (degrees, 0 to 180), each side gets its own normal and aperture; with given normals, points
+   * welded together whose normals differ by more. Default 60: the 90 degree edges of CAD parts
+   * split, tessellated curves of 8 or more segments and the noise of scans do not. 180 never
+   * splits.
+   */
+  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
+  vtkGetMacro(FeatureAngle, double);
+  ///@}
+
+  ///@{
+  /**
+   * Polydata only: when positive, triangles are split until no edge is longer (world units), so
+   * that large faces get points enough for contact shadows; the output is then the refined
+   * surface. Default 0: no refinement.
+   */
+  vtkSetClampMacro(MaximumEdgeLength, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumEdgeLength, double);
+  ///@}
+
+  enum AccelerationStructures
+  {
+    AUTOMATIC = 0,
+    COMPACT = 1,
+    FAST = 2
+  };
+
+  ///@{
+  /**
+   * Embree's acceleration structure. AUTOMATIC (default) builds the fast one up to 8 million
+   * triangles and the compact one above (about 70% of the memory, 75% of the speed).
+   */
+  vtkSetClampMacro(AccelerationStructure, int, AUTOMATIC, FAST);
+  vtkGetMacro(AccelerationStructure, int);
+  void SetAccelerationStructureToAutomatic() { this->SetAccelerationStructure(AUTOMATIC); }
+  void SetAccelerationStructureToCompact() { this->SetAccelerationStructure(COMPACT); }
+  void SetAccelerationStructureToFast() { this->SetAccelerationStructure(FAST); }
+  ///@}
+
+  ///@{
+  /**
+   * Configuration string handed to rtcNewDevice() (for example "threads=2,verbose=1"); empty
+   * by default. An invalid string makes the filter fail with Embree's message.
+   */
+  vtkSetStdStringFromCharMacro(EmbreeConfiguration);
+  vtkGetCharFromStdStringMacro(EmbreeConfiguration);
+  ///@}
+
+  enum Methods
+  {
+    HORIZONS_FOR_HEIGHT_FIELDS = 0,
+    RAYS = 1,
+    HORIZONS = 2
+  };
+
+  ///@{
+  /**
+   * How visibility is found. HORIZONS_FOR_HEIGHT_FIELDS (default): horizon sweeps for a height
+   * field without occluders, rays otherwise. RAYS: NumberOfRays Embree rays per point. HORIZONS:
+   * horizon sweeps, for height fields only (anything else, or occluders, is an error): the
+   * horizon of every texel in NumberOfSectors azimuth sectors, found along lines across the
+   * grid in time linear in texels × sectors, then per sector the exact visible solid angle
+   * above it (see vtkHorizonApertures). Texels that are not finite, or 0 in a
+   * `vtkValidPointMask` point array, are no-data: they neither occlude nor receive, and get a
+   * closed aperture and a 0 in the output's `vtkValidPointMask`.
+   */
+  vtkSetClampMacro(Method, int, HORIZONS_FOR_HEIGHT_FIELDS, HORIZONS);
+  vtkGetMacro(Method, int);
+  void SetMethodToHorizonsForHeightFields() { this->SetMethod(HORIZONS_FOR_HEIGHT_FIELDS); }
+  void SetMethodToRays() { this->SetMethod(RAYS); }
+  void SetMethodToHorizons() { this->SetMethod(HORIZONS); }
+  ///@}
+
+  ///@{
+  /**
+   * Azimuth sectors of the horizon sweeps, in [4, 1024]. Default 32.
+   */
+  vtkSetClampMacro(NumberOfSectors, int, 4, 1024);
+  vtkGetMacro(NumberOfSectors, int);
+  ///@}
+
+  /**
+   * Whether the last update swept horizons (or cast rays).
+   */
+  vtkGetMacro(UsedHorizons, bool);
+
+  /**
+   * The surface points that cast rays in the last update, NumberOfRays each: one per position
+   * and side of a crease (points welded together cast once), or per texel; 0 after horizon
+   * sweeps.
+   */
+  vtkGetMacro(NumberOfSurfacePoints, vtkIdType);
+
+  ///@{
+  /**
+   * The controller of a distributed run (default: the global one). When the update asks for one
+   * of several pieces and the controller has several processes, the filter gathers every other
+   * rank's polygons and strips as occluders (only those within MaximumDistance of this rank's
+   * bounds when LimitDistance is on), so that each piece gets the serial answer; every rank must
+   * then update the filter, and an empty piece gives an empty output. Height-field pieces need no
+   * gathering: the filter makes a piece's extent (a block of the grid) and asks its input for it
+   * grown by MaximumDistance (all of the grid when LimitDistance is off).
+   */
+  virtual void SetController(vtkMultiProcessController* controller);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  ///@}
+
+protected:
+  vtkAperturePrecompute();
+  ~vtkAperturePrecompute() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  // A height field's tile needs MaximumDistance of grid around it.
+  int RequestUpdateExtent(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  int NumberOfRays = 256;
+  bool LimitDistance = false;
+  double MaximumDistance = VTK_DOUBLE_MAX;
+  double RayOffset = 0.001;
+  int Seed = 0;
+  int Sampling = STRATIFIED;
+  double HeightScale = 1.0;
+  bool ComputeAmbientOcclusion = false;
+  double FeatureAngle = 60.0;
+  double MaximumEdgeLength = 0.0;
+  int AccelerationStructure = AUTOMATIC;
+  int Method = HORIZONS_FOR_HEIGHT_FIELDS;
+  int NumberOfSectors = 32;
+  bool UsedHorizons = false;
+  vtkIdType NumberOfSurfacePoints = 0;
+  vtkMultiProcessController* Controller = nullptr;
+  std::string BentNormalArrayName = "BentNormal";
+  std::string ApertureRadiusArrayName = "ApertureRadius";
+  std::string AmbientOcclusionArrayName = "AmbientOcclusion";
+  std::string EmbreeConfiguration;
+
+private:
+  vtkAperturePrecompute(const vtkAperturePrecompute&) = delete;
+  // MaximumDistance when LimitDistance is on, else VTK_DOUBLE_MAX.
+  double SearchDistance() const;
+  void operator=(const vtkAperturePrecompute&) = delete;
+
+  class vtkRun; // the steps of one RequestData
+};
+
+#endif

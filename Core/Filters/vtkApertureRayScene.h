@@ -1,0 +1,188 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    vtkApertureRayScene.h
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+/**
+ * @class   vtkApertureRayScene
+ * @brief   Embree device and scene over vtkApertureSurface triangles, with the casters' hit
+ *          rules (private)
+ *
+ * Owns an Embree device and one scene, shares the surfaces' vertex buffers with Embree (the
+ * surfaces must outlive the scene), and records the first error Embree reports through its
+ * device callback, so that the filters can turn it into a vtkErrorMacro on the main thread.
+ * After Build() the scene may be queried from any number of threads, through
+ * vtkApertureRayPacket.
+ *
+ * The rules all casters share. A ray from a receiving point starts Offset above it along its
+ * normal, but is traced from PullBack offsets behind that start; hits up to the point's Near
+ * distance from where it is traced are near. A hit
+ *
+ * - near blocks the ray only if the ray goes into the triangle's front: a point lying on another
+ *   surface (the foot of a wall standing on the ground) is closed by that surface's front (the
+ *   half of its hemisphere that goes into the ground), not by its back (contact). Tracing from
+ *   behind the start finds such a surface through the start robustly;
+ * - farther blocks unless it is on the back of one of the point's own triangles (those at its
+ *   vertex): a folded or sliver triangle of a scan's one-ring, whose back faces the point, does
+ *   not close it, while the walls of a real crevice, whose fronts face it, still do (self-hits).
+ *
+ * Embree calls an occlusion filter for every hit it finds on a geometry that has one, which
+ * costs on every occluded ray. Only where the rules can reject a hit do triangles get it: those
+ * whose normal is within acos(PullBack) of 90 degrees from, or against, the normal of a
+ * receiving point at one of their vertices, and those that pass within the Near distance of some
+ * receiving point's ray start. Every other hit blocks, and those triangles are a geometry
+ * without a filter.
+ */
+
+#ifndef vtkApertureRayScene_h
+#define vtkApertureRayScene_h
+
+#include "vtkApertureLightingCoreModule.h" // For export macro
+#include "vtkType.h"
+
+#include <embree3/rtcore.h>
+
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#if defined(__SSE__) || defined(_M_X64)
+#include <xmmintrin.h>
+#endif
+
+class vtkApertureSurface;
+
+class VTKAPERTURELIGHTINGCORE_EXPORT vtkApertureRayScene
+{
+public:
+  vtkApertureRayScene() = default;
+  ~vtkApertureRayScene();
+  vtkApertureRayScene(const vtkApertureRayScene&) = delete;
+  vtkApertureRayScene& operator=(const vtkApertureRayScene&) = delete;
+
+  ///@{
+  /// Rays are traced from PullBack offsets behind their start. Hits up to a point's Near
+  /// distance from there are near: NearZone offsets, or ContactTolerance of the mean length of
+  /// its vertex's edges, whichever is more (vtkApertureSurface::SetRayOffset()). The tolerance
+  /// takes a scan's vertex that reconstruction left a hair under its neighbour's triangle for a
+  /// point on the surface, as it is.
+  static constexpr float PullBack = 0.25f;
+  static constexpr float NearZone = 2.0f;
+  static constexpr float ContactTolerance = 0.05f;
+  ///@}
+
+  /// Embree's acceleration structures.
+  enum Structures
+  {
+    AUTOMATIC = 0, ///< FAST up to CompactThreshold triangles, COMPACT above
+    COMPACT = 1,   ///< about 70% of the memory, about 75% of the speed
+    FAST = 2
+  };
+
+  /// Triangles above which AUTOMATIC builds the compact structure (about 1 GB of fast BVH).
+  static constexpr vtkIdType CompactThreshold = 8000000;
+
+  /**
+   * Whether a structure setting builds the compact BVH for this many triangles.
+   */
+  static bool IsCompact(int structure, vtkIdType triangles);
+
+  /**
+   * Builds the scene of the receivers (whose points cast rays; their ray offsets must be set)
+   * and the occluders, with an rtcNewDevice() configuration string and a structure setting.
+   * False when Embree fails (GetError() says why).
+   */
+  bool Build(const std::vector<const vtkApertureSurface*>& receivers,
+    const std::vector<const vtkApertureSurface*>& occluders, int structure = AUTOMATIC,
+    const std::string& configuration = std::string());
+
+  /**
+   * Build() for one receiver and its occluders.
+   */
+  bool Build(const vtkApertureSurface& receivers, const std::vector<vtkApertureSurface>& occluders,
+    int structure = AUTOMATIC);
+
+  /**
+   * Triangles that got the hit filter in the last Build(), of all.
+   */
+  vtkIdType GetNumberOfFilteredTriangles() const { return this->FilteredTriangles; }
+
+  RTCScene GetScene() const { return this->Scene; }
+
+  /**
+   * What the occlusion filter learns of a ray's source: the intersect context of the query,
+   * the surface its points belong to. Rays carry their receiving point in RTCRay::id.
+   */
+  struct Context
+  {
+    RTCIntersectContext Base; // first: Embree sees this
+    const vtkApertureSurface* Source;
+  };
+
+  /**
+   * Keeps denormals out of Embree's traversal, as Embree recommends, for the calling thread
+   * while it exists.
+   */
+  class FlushToZero
+  {
+  public:
+#if defined(__SSE__) || defined(_M_X64)
+    FlushToZero()
+      : Saved(_mm_getcsr())
+    {
+      _mm_setcsr(this->Saved | 0x8040); // FTZ and DAZ
+    }
+    ~FlushToZero()
+    {
+      _mm_setcsr(this->Saved);
+    }
+
+  private:
+    unsigned int Saved;
+#endif
+  };
+
+  /**
+   * The first error Embree reported, empty if none.
+   */
+  std::string GetError();
+
+  /**
+   * What a filtered geometry tells its filter: its surface, and which of the surface's
+   * triangles its primitives are.
+   */
+  struct Filtered
+  {
+    const vtkApertureSurface* Surface;
+    std::vector<std::uint32_t> Triangles; // ids into Surface->Triangles
+    std::vector<std::uint32_t> Indices;   // their vertex ids, for Embree
+  };
+
+private:
+  static void ReportError(void* self, RTCError code, const char* message);
+  static void Filter(const RTCFilterFunctionNArguments* args);
+  bool Failed();
+  // Adds a surface as a geometry without filter and one with it (`risky`: per triangle).
+  bool AddSurface(const vtkApertureSurface& surface, const std::vector<unsigned char>& risky);
+  bool AddGeometry(const vtkApertureSurface& surface, const std::vector<std::uint32_t>& indices,
+    Filtered* filtered);
+
+  RTCDevice Device = nullptr;
+  RTCScene Scene = nullptr;
+  std::mutex ErrorMutex;
+  std::string Error;
+  // Index buffers Embree shares: those of the unfiltered geometries, and the filtered ones.
+  std::vector<std::vector<std::uint32_t>> Plain;
+  std::vector<std::unique_ptr<Filtered>> Risky;
+  vtkIdType FilteredTriangles = 0;
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkApertureRayScene.h

@@ -1,0 +1,267 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    vtkHorizonHeightField.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkHorizonHeightField.h"
+
+#include "vtkApertureValidMask.h"
+#include "vtkHorizonApertures.h"
+
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkMatrix3x3.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <new>
+#include <vector>
+
+namespace
+{
+// An array of `tuples` tuples, or nullptr when it cannot be allocated.
+vtkSmartPointer<vtkFloatArray> NewArray(const char* name, int components, vtkIdType tuples)
+{
+  auto array = vtkSmartPointer<vtkFloatArray>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  if (!array->Allocate(components * tuples))
+  {
+    return nullptr;
+  }
+  array->SetNumberOfTuples(tuples);
+  return array;
+}
+
+// The grid frame's axes in world coordinates: x along i, y along j, z along the third axis.
+// False when they are the world's own.
+bool WorldAxes(vtkImageData* image, double axes[3][3])
+{
+  const double* d = image->GetDirectionMatrix()->GetData();
+  const double* spacing = image->GetSpacing();
+  bool identity = true;
+  for (int a = 0; a < 3; ++a)
+  {
+    const double sign = a < 2 && spacing[a] < 0.0 ? -1.0 : 1.0;
+    for (int r = 0; r < 3; ++r)
+    {
+      axes[a][r] = sign * d[3 * r + a];
+      identity = identity && axes[a][r] == (r == a ? 1.0 : 0.0);
+    }
+  }
+  return !identity;
+}
+
+// The scaled heights and the valid flags (empty without a mask) of the texels in `window`
+// (i0, i1, j0, j1), i fastest.
+void CopyWindow(vtkImageData* image, vtkDataArray* heights, double scale, const int window[4],
+  std::vector<float>& z, std::vector<unsigned char>& valid)
+{
+  const vtkIdType nx = window[1] - window[0] + 1, ny = window[3] - window[2] + 1;
+  vtkDataArray* mask = image->GetPointData()->GetArray(vtkApertureValidMask::Name());
+  z.resize(nx * ny);
+  valid.resize(mask ? nx * ny : 0);
+  vtkSMPTools::For(0, ny,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType r = first; r < last; ++r)
+      {
+        int ijk[3] = { window[0], window[2] + static_cast<int>(r), image->GetExtent()[4] };
+        const vtkIdType start = image->ComputePointId(ijk);
+        for (vtkIdType i = 0; i < nx; ++i)
+        {
+          z[r * nx + i] = static_cast<float>(heights->GetComponent(start + i, 0) * scale);
+          if (mask)
+          {
+            valid[r * nx + i] = mask->GetComponent(start + i, 0) != 0.0 ? 1 : 0;
+          }
+        }
+      }
+    });
+}
+
+// Turns n unit vectors from the grid frame into world coordinates.
+void ToWorld(vtkImageData* image, float* vectors, vtkIdType n)
+{
+  double axes[3][3];
+  if (!WorldAxes(image, axes))
+  {
+    return;
+  }
+  vtkSMPTools::For(0, n,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType i = first; i < last; ++i)
+      {
+        float* v = vectors + 3 * i;
+        const double local[3] = { v[0], v[1], v[2] };
+        for (int r = 0; r < 3; ++r)
+        {
+          v[r] = static_cast<float>(
+            local[0] * axes[0][r] + local[1] * axes[1][r] + local[2] * axes[2][r]);
+        }
+      }
+    });
+}
+
+// The texels the sweeps read for `extent`: grown by the search radius, within the image (which
+// may hold more than the pipeline asked for); false, with `error`, for an extent outside it.
+bool SweepWindow(vtkImageData* image, const int extent[6], double maximumDistance, int window[4],
+  std::string& error)
+{
+  const int* whole = image->GetExtent();
+  const int halo = vtkHorizonHeightField::Halo(maximumDistance, image->GetSpacing());
+  for (int k = 0; k < 4; ++k)
+  {
+    const int grown = k % 2 ? extent[k] + halo : extent[k] - halo;
+    window[k] = halo < 0 ? whole[k] : k % 2 ? std::min(whole[k], grown) : std::max(whole[k], grown);
+  }
+  if (window[1] < window[0] || window[3] < window[2] || extent[0] < whole[0] ||
+    extent[1] > whole[1] || extent[2] < whole[2] || extent[3] > whole[3])
+  {
+    error = "The extent asked for lies outside the image.";
+    return false;
+  }
+  return true;
+}
+
+// The sweeps' grid of `window` (heights in `z`, no-data in `valid`), computing `extent`.
+bool MakeGrid(vtkImageData* image, vtkDataArray* heights, const int extent[6], const int window[4],
+  const vtkHorizonHeightField::Settings& settings, std::vector<float>& z,
+  std::vector<unsigned char>& valid, vtkHorizonApertures::Grid& grid, std::string& error)
+{
+  grid.Nx = window[1] - window[0] + 1;
+  grid.Ny = window[3] - window[2] + 1;
+  try
+  {
+    CopyWindow(image, heights, settings.HeightScale, window, z, valid);
+  }
+  catch (const std::bad_alloc&)
+  {
+    error = "There is not enough memory for the " + std::to_string(grid.Nx) + " x " +
+      std::to_string(grid.Ny) + " texels' heights; set a MaximumDistance and stream in tiles.";
+    return false;
+  }
+  grid.Heights = z.data();
+  grid.Valid = valid.empty() ? nullptr : valid.data();
+  grid.Dx = std::abs(image->GetSpacing()[0]);
+  grid.Dy = std::abs(image->GetSpacing()[1]);
+  grid.Sectors = settings.Sectors;
+  grid.MaximumDistance = settings.MaximumDistance;
+  const vtkIdType local[4] = { extent[0] - window[0], extent[1] - window[0], extent[2] - window[2],
+    extent[3] - window[2] };
+  std::copy(local, local + 4, grid.OutputExtent);
+  grid.Origin[0] = window[0];
+  grid.Origin[1] = window[2];
+  return true;
+}
+
+// The output arrays of Compute(), allocated, filled through Buffers() and added to the output.
+struct Results
+{
+  vtkSmartPointer<vtkFloatArray> Bent, Radius, Normals, Occlusion;
+  vtkNew<vtkUnsignedCharArray> Mask;
+
+  bool Allocate(const vtkHorizonHeightField::Settings& settings, vtkIdType texels)
+  {
+    this->Bent = NewArray(settings.BentNormalName, 3, texels);
+    this->Radius = NewArray(settings.RadiusName, 1, texels);
+    this->Normals = NewArray("Normals", 3, texels);
+    this->Occlusion =
+      settings.AmbientOcclusion ? NewArray(settings.OcclusionName, 1, texels) : nullptr;
+    this->Mask->SetName(vtkApertureValidMask::Name());
+    if (!this->Bent || !this->Radius || !this->Normals ||
+      (settings.AmbientOcclusion && !this->Occlusion) || !this->Mask->Allocate(texels))
+    {
+      return false;
+    }
+    this->Mask->SetNumberOfTuples(texels);
+    return true;
+  }
+
+  vtkHorizonApertures::Buffers Buffers() const
+  {
+    return { this->Bent->GetPointer(0), this->Radius->GetPointer(0),
+      this->Occlusion ? this->Occlusion->GetPointer(0) : nullptr, this->Normals->GetPointer(0),
+      this->Mask->GetPointer(0) };
+  }
+
+  // Directions to world coordinates, arrays into `output`; returns the no-data texels.
+  vtkIdType AddTo(vtkImageData* image, vtkPointData* output)
+  {
+    const vtkIdType texels = this->Radius->GetNumberOfTuples();
+    ToWorld(image, this->Bent->GetPointer(0), texels);
+    ToWorld(image, this->Normals->GetPointer(0), texels);
+    output->AddArray(this->Bent);
+    output->AddArray(this->Radius);
+    if (this->Occlusion)
+    {
+      output->AddArray(this->Occlusion);
+    }
+    if (!output->GetNormals())
+    {
+      output->SetNormals(this->Normals); // the normals used, unless the input brings its own
+    }
+    const unsigned char* mask = this->Mask->GetPointer(0);
+    const vtkIdType noData = texels - std::count(mask, mask + texels, 1);
+    if (noData > 0)
+    {
+      output->AddArray(this->Mask);
+    }
+    return noData;
+  }
+};
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkHorizonHeightField::Compute(vtkImageData* image, vtkDataArray* heights,
+  const int extent[6], const Settings& settings, vtkPointData* output, std::string& error,
+  const std::function<bool(double fraction)>& progress)
+{
+  int window[4];
+  std::vector<float> z;
+  std::vector<unsigned char> valid;
+  vtkHorizonApertures::Grid grid;
+  vtkIdType nx = 0, ny = 0;
+  if (!SweepWindow(image, extent, settings.MaximumDistance, window, error) ||
+    !MakeGrid(image, heights, extent, window, settings, z, valid, grid, error) ||
+    !vtkHorizonApertures::GetOutputSize(grid, nx, ny, error))
+  {
+    return -1;
+  }
+  Results results;
+  if (!results.Allocate(settings, nx * ny))
+  {
+    error = "There is not enough memory for the apertures of " + std::to_string(nx * ny) +
+      " texels; set a MaximumDistance and stream in tiles.";
+    return -1;
+  }
+  if (!vtkHorizonApertures::Compute(grid, results.Buffers(), error, progress))
+  {
+    return -1;
+  }
+  return results.AddTo(image, output);
+}
+
+//------------------------------------------------------------------------------
+int vtkHorizonHeightField::Halo(double maximumDistance, const double spacing[3])
+{
+  const double finer = std::min(std::abs(spacing[0]), std::abs(spacing[1]));
+  const double texels = maximumDistance / finer;
+  if (!(texels < 1e8)) // no radius, or one wider than any grid
+  {
+    return -1;
+  }
+  return static_cast<int>(std::ceil(texels)) + 2;
+}
