@@ -16,7 +16,9 @@
 #include "vtkApertureRaySampler.h"
 #include "vtkApertureRayScene.h"
 #include "vtkApertureRefinement.h"
+#include "vtkApertureSceneSurfaces.h"
 #include "vtkApertureSurface.h"
+#include "vtkApertureSurfaceOutput.h"
 #include "vtkApertureText.h"
 #include "vtkHorizonHeightField.h"
 #include "vtkMortonOrder.h"
@@ -455,54 +457,24 @@ bool vtkAperturePrecompute::vtkRun::Refine()
 }
 
 //------------------------------------------------------------------------------
-// Every surface around one local origin, which keeps single precision where the geometry is.
 bool vtkAperturePrecompute::vtkRun::BuildSurfaces()
 {
   vtkAperturePrecompute* self = this->Self;
-  double bounds[6];
-  vtkApertureSurface::InitializeBounds(bounds);
+  std::vector<vtkApertureSceneSurfaces::Receiver> receivers;
   for (const auto& r : this->Receivers)
   {
-    if (auto* image = vtkImageData::SafeDownCast(r->Input))
-    {
-      vtkApertureSurface::ExpandBounds(image, r->Heights, self->HeightScale, bounds);
-    }
-    else
-    {
-      vtkApertureSurface::ExpandBounds(vtkPolyData::SafeDownCast(r->Source()), bounds);
-    }
+    receivers.push_back({ r->Source(), r->Heights, &r->Surface });
   }
-  for (vtkPolyData* occluder : this->Occluders)
-  {
-    vtkApertureSurface::ExpandBounds(occluder, bounds);
-  }
-  double origin[3];
-  vtkApertureSurface::OriginOf(bounds, origin);
-
+  vtkApertureSceneSurfaces::Settings settings;
+  settings.FeatureAngle = self->FeatureAngle;
+  settings.RayOffset = self->RayOffset;
+  settings.HeightScale = self->HeightScale;
   std::string error;
-  for (const auto& r : this->Receivers)
+  if (!vtkApertureSceneSurfaces::Build(
+        receivers, this->Occluders, settings, this->OccluderSurfaces, error))
   {
-    auto* image = vtkImageData::SafeDownCast(r->Input);
-    const bool ok = image
-      ? r->Surface.SetHeightField(image, r->Heights, self->HeightScale, origin, error)
-      : r->Surface.SetPolyData(
-          vtkPolyData::SafeDownCast(r->Source()), origin, self->FeatureAngle, error);
-    if (!ok)
-    {
-      vtkErrorWithObjectMacro(self, "Cannot use the input: " << error << ".");
-      return false;
-    }
-    r->Surface.SetRayOffset(self->RayOffset);
-  }
-  this->OccluderSurfaces.resize(this->Occluders.size());
-  for (size_t i = 0; i < this->Occluders.size(); ++i)
-  {
-    if (!this->OccluderSurfaces[i].SetPolyData(
-          this->Occluders[i], origin, self->FeatureAngle, error))
-    {
-      vtkErrorWithObjectMacro(self, "Cannot use occluder " << i << ": " << error << ".");
-      return false;
-    }
+    vtkErrorWithObjectMacro(self, << error);
+    return false;
   }
   return true;
 }
@@ -546,6 +518,7 @@ bool vtkAperturePrecompute::vtkRun::Cast()
   self->NumberOfSurfacePoints = casting;
   vtkIdType done = 0;
   self->UpdateProgress(0.0);
+  std::string error;
   for (const auto& r : this->Receivers)
   {
     const vtkIdType n = r->Surface.GetNumberOfPoints();
@@ -553,23 +526,22 @@ bool vtkAperturePrecompute::vtkRun::Cast()
     r->Results.Radius.resize(n);
     r->Results.Occlusion.assign(self->ComputeAmbientOcclusion ? n : 0, 0.0f);
     const CastRays cast(r->Surface, this->Scene, sampler, maximumDistance, r->Results);
-    for (vtkIdType first = 0; first < n; first += batch)
+    auto progress = [&](vtkIdType traced)
     {
-      vtkSMPTools::For(first, std::min(n, first + batch), 16, cast);
-      done += std::min(batch, n - first);
-      self->UpdateProgress(static_cast<double>(done) / std::max<vtkIdType>(casting, 1));
-      if (self->GetAbortExecute())
-      {
-        this->Aborted = true;
-        return true;
-      }
+      self->UpdateProgress(static_cast<double>(done + traced) / std::max<vtkIdType>(casting, 1));
+      return !self->GetAbortExecute();
+    };
+    if (!this->Scene.TraceInBatches(n, batch, 16, cast, progress, error))
+    {
+      vtkErrorWithObjectMacro(self, "Embree failed while tracing: " << error);
+      return false;
     }
-  }
-  const std::string embreeError = this->Scene.GetError();
-  if (!embreeError.empty())
-  {
-    vtkErrorWithObjectMacro(self, "Embree failed while tracing: " << embreeError);
-    return false;
+    this->Aborted = self->GetAbortExecute() != 0;
+    if (this->Aborted)
+    {
+      return true;
+    }
+    done += n;
   }
   return true;
 }
@@ -587,7 +559,8 @@ void vtkAperturePrecompute::vtkRun::WriteOutputs(const int* extent)
     std::vector<vtkIdType> points;
     if (auto* poly = vtkPolyData::SafeDownCast(r->Source()))
     {
-      r->Surface.MakeOutput(poly, vtkPolyData::SafeDownCast(r->Output), points);
+      vtkApertureSurfaceOutput::Make(
+        r->Surface, poly, vtkPolyData::SafeDownCast(r->Output), points);
     }
     else
     {
@@ -596,19 +569,19 @@ void vtkAperturePrecompute::vtkRun::WriteOutputs(const int* extent)
     }
     const Caps& c = r->Results;
     vtkPointData* pd = r->Output->GetPointData();
-    auto bent = vtkApertureSurface::Scatter(self->BentNormalArrayName, 3, c.BentNormal.data(),
+    auto bent = vtkApertureSurfaceOutput::Scatter(self->BentNormalArrayName, 3, c.BentNormal.data(),
       c.BentNormal.data() + c.BentNormal.size(), points, up, up);
     OpenAroundNormals(bent, points, r->Source()->GetPointData()->GetNormals());
     pd->AddArray(bent);
-    pd->AddArray(vtkApertureSurface::Scatter(self->ApertureRadiusArrayName, 1, c.Radius.data(),
-      c.Radius.data() + c.Radius.size(), points, &openRadius, &closedRadius));
+    pd->AddArray(vtkApertureSurfaceOutput::Scatter(self->ApertureRadiusArrayName, 1,
+      c.Radius.data(), c.Radius.data() + c.Radius.size(), points, &openRadius, &closedRadius));
     if (!c.Occlusion.empty())
     {
       pd->AddArray(
-        vtkApertureSurface::Scatter(self->AmbientOcclusionArrayName, 1, c.Occlusion.data(),
+        vtkApertureSurfaceOutput::Scatter(self->AmbientOcclusionArrayName, 1, c.Occlusion.data(),
           c.Occlusion.data() + c.Occlusion.size(), points, &openOcclusion, &closedOcclusion));
     }
-    r->Surface.AddComputedNormals(pd, points);
+    vtkApertureSurfaceOutput::AddComputedNormals(r->Surface, pd, points);
     // A tile: the input's halo cast rays, the output is the tile.
     auto* image = vtkImageData::SafeDownCast(r->Output);
     if (image && extent && !std::equal(extent, extent + 6, image->GetExtent()))

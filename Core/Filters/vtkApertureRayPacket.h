@@ -14,7 +14,7 @@
  *
  * The one place where a caster's rays meet Embree. Set() places a ray where every caster places
  * it: from a receiving point of the source surface, starting at the point's Start (Offset above
- * it, see vtkApertureSurface::SetRayOffset()), traced from vtkApertureRayScene::PullBack offsets
+ * it, see vtkApertureRayOffsets), traced from vtkApertureRayOffsets::PullBack offsets
  * behind that start (the scene's filter then applies the contact and self-hit rules near it),
  * up to a distance. Trace() casts the
  * packet with rtcOccluded16; Visible() tells which rays got through.
@@ -26,6 +26,7 @@
 #define vtkApertureRayPacket_h
 
 #include "vtkApertureLightingCoreModule.h" // For export macro
+#include "vtkApertureRayOffsets.h"         // For PullBack
 #include "vtkApertureRayScene.h"           // For the context and FlushToZero
 #include "vtkType.h"
 
@@ -52,7 +53,7 @@ public:
   void Set(int lane, vtkIdType point, const float direction[3], float tfar)
   {
     const float* o = this->Starts + 3 * point;
-    const float back = vtkApertureRayScene::PullBack * this->Offsets[point];
+    const float back = vtkApertureRayOffsets::PullBack * this->Offsets[point];
     this->Ray.org_x[lane] = o[0] - back * direction[0];
     this->Ray.org_y[lane] = o[1] - back * direction[1];
     this->Ray.org_z[lane] = o[2] - back * direction[2];
@@ -72,7 +73,7 @@ public:
   void SetFan(vtkIdType point, int count, float tfar)
   {
     const float* o = this->Starts + 3 * point;
-    const float back = vtkApertureRayScene::PullBack * this->Offsets[point];
+    const float back = vtkApertureRayOffsets::PullBack * this->Offsets[point];
     for (int lane = 0; lane < Lanes; ++lane)
     {
       this->Ray.org_x[lane] = o[0] - back * this->Ray.dir_x[lane];

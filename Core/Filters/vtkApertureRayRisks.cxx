@@ -10,7 +10,7 @@
 =========================================================================*/
 #include "vtkApertureRayRisks.h"
 
-#include "vtkApertureRayScene.h"
+#include "vtkApertureRayOffsets.h"
 #include "vtkApertureSurface.h"
 #include "vtkSMPTools.h"
 
@@ -226,7 +226,7 @@ void vtkApertureRayRisks::MarkIncident(
       {
         const float* n = surface.GetNormal(points[k]);
         const double cosine = (n[0] * normal[0] + n[1] * normal[1] + n[2] * normal[2]) / length;
-        risky[t] = surface.Valid[points[k]] && !(cosine >= vtkApertureRayScene::PullBack);
+        risky[t] = surface.Valid[points[k]] && !(cosine >= vtkApertureRayOffsets::PullBack);
       }
     }
   }

@@ -20,8 +20,8 @@
  * vtkApertureRayPacket.
  *
  * The rules all casters share. A ray from a receiving point starts Offset above it along its
- * normal, but is traced from PullBack offsets behind that start; hits up to the point's Near
- * distance from where it is traced are near. A hit
+ * normal, but is traced from PullBack offsets behind that start (vtkApertureRayOffsets); hits up
+ * to the point's Near distance from where it is traced are near. A hit
  *
  * - near blocks the ray only if the ray goes into the triangle's front: a point lying on another
  *   surface (the foot of a wall standing on the ground) is closed by that surface's front (the
@@ -43,11 +43,13 @@
 #define vtkApertureRayScene_h
 
 #include "vtkApertureLightingCoreModule.h" // For export macro
+#include "vtkSMPTools.h"                   // For TraceInBatches()
 #include "vtkType.h"
 
 #include <embree3/rtcore.h>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -66,17 +68,6 @@ public:
   ~vtkApertureRayScene();
   vtkApertureRayScene(const vtkApertureRayScene&) = delete;
   vtkApertureRayScene& operator=(const vtkApertureRayScene&) = delete;
-
-  ///@{
-  /// Rays are traced from PullBack offsets behind their start. Hits up to a point's Near
-  /// distance from there are near: NearZone offsets, or ContactTolerance of the mean length of
-  /// its vertex's edges, whichever is more (vtkApertureSurface::SetRayOffset()). The tolerance
-  /// takes a scan's vertex that reconstruction left a hair under its neighbour's triangle for a
-  /// point on the surface, as it is.
-  static constexpr float PullBack = 0.25f;
-  static constexpr float NearZone = 2.0f;
-  static constexpr float ContactTolerance = 0.05f;
-  ///@}
 
   /// Embree's acceleration structures.
   enum Structures
@@ -153,6 +144,29 @@ public:
    * The first error Embree reported, empty if none.
    */
   std::string GetError();
+
+  /**
+   * The batched loop every caster traces with: runs `trace` (a vtkSMPTools functor over a range
+   * of its receiving points) on points 0 .. n - 1, `batch` points at a time on all cores, `grain`
+   * points to a task, and calls `progress(done)` after each batch; returning false stops the
+   * loop (an abort). False with `error` when Embree failed while tracing.
+   */
+  template <typename Trace>
+  bool TraceInBatches(vtkIdType n, vtkIdType batch, vtkIdType grain, const Trace& trace,
+    const std::function<bool(vtkIdType done)>& progress, std::string& error)
+  {
+    for (vtkIdType first = 0; first < n; first += batch)
+    {
+      const vtkIdType last = first + batch < n ? first + batch : n;
+      vtkSMPTools::For(first, last, grain, trace);
+      if (!progress(last))
+      {
+        break;
+      }
+    }
+    error = this->GetError();
+    return error.empty();
+  }
 
   /**
    * What a filtered geometry tells its filter: its surface, and which of the surface's

@@ -14,7 +14,9 @@
 #include "vtkApertureRayPacket.h"
 #include "vtkApertureRaySampler.h"
 #include "vtkApertureRayScene.h"
+#include "vtkApertureSceneSurfaces.h"
 #include "vtkApertureSurface.h"
+#include "vtkApertureSurfaceOutput.h"
 #include "vtkEnvironmentMap.h"
 #include "vtkSphericalCap.h"
 
@@ -224,19 +226,18 @@ bool Trace(vtkApertureReference* self, const vtkApertureSurface& receivers,
     self, receivers, scene, sampler, light, self->GetEnvironment(), irradiance, noise);
   const vtkIdType n = receivers.GetNumberOfPoints();
   self->UpdateProgress(0.0);
-  for (vtkIdType first = 0; first < n && !aborted; first += Batch)
+  auto progress = [&](vtkIdType traced)
   {
-    vtkSMPTools::For(first, std::min(n, first + Batch), 64, estimate);
-    self->UpdateProgress(
-      static_cast<double>(std::min(n, first + Batch)) / std::max<vtkIdType>(n, 1));
-    aborted = self->GetAbortExecute() != 0;
-  }
-  const std::string embreeError = scene.GetError();
-  if (!embreeError.empty())
+    self->UpdateProgress(static_cast<double>(traced) / std::max<vtkIdType>(n, 1));
+    return !self->GetAbortExecute();
+  };
+  std::string error;
+  if (!scene.TraceInBatches(n, Batch, 64, estimate, progress, error))
   {
-    vtkErrorWithObjectMacro(self, "Embree failed while tracing: " << embreeError);
+    vtkErrorWithObjectMacro(self, "Embree failed while tracing: " << error);
     return false;
   }
+  aborted = self->GetAbortExecute() != 0;
   return true;
 }
 
@@ -247,11 +248,11 @@ void WriteArrays(vtkApertureReference* self, const vtkApertureSurface& receivers
 {
   const float nan[3] = { std::numeric_limits<float>::quiet_NaN(),
     std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::quiet_NaN() };
-  receivers.AddComputedNormals(pd, points);
-  pd->AddArray(vtkApertureSurface::Scatter(self->GetIrradianceArrayName(), components,
+  vtkApertureSurfaceOutput::AddComputedNormals(receivers, pd, points);
+  pd->AddArray(vtkApertureSurfaceOutput::Scatter(self->GetIrradianceArrayName(), components,
     irradiance.data(), irradiance.data() + irradiance.size(), points, nan, nan));
-  pd->AddArray(vtkApertureSurface::Scatter(self->GetNoiseArrayName(), components, noise.data(),
-    noise.data() + noise.size(), points, nan, nan));
+  pd->AddArray(vtkApertureSurfaceOutput::Scatter(self->GetNoiseArrayName(), components,
+    noise.data(), noise.data() + noise.size(), points, nan, nan));
 }
 }
 
@@ -329,9 +330,12 @@ int vtkApertureReference::RequestData(
   std::string error;
   vtkApertureSurface receivers;
   std::vector<vtkApertureSurface> occluderSurfaces;
-  if (!vtkApertureSurface::SetScene(input,
-        vtkApertureDistributedOccluders::Occluders(inputVector[1], remote), this->FeatureAngle,
-        this->RayOffset, receivers, occluderSurfaces, error))
+  vtkApertureSceneSurfaces::Settings settings;
+  settings.FeatureAngle = this->FeatureAngle;
+  settings.RayOffset = this->RayOffset;
+  if (!vtkApertureSceneSurfaces::Build(input,
+        vtkApertureDistributedOccluders::Occluders(inputVector[1], remote), settings, receivers,
+        occluderSurfaces, error))
   {
     vtkErrorMacro(<< error);
     return 0;
@@ -354,7 +358,7 @@ int vtkApertureReference::RequestData(
   }
   // 3. The arrays on the output's points (split at creases).
   std::vector<vtkIdType> points;
-  receivers.MakeOutput(input, output, points);
+  vtkApertureSurfaceOutput::Make(receivers, input, output, points);
   WriteArrays(this, receivers, points, components, irradiance, noise, output->GetPointData());
   return 1;
 }

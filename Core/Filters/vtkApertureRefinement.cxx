@@ -10,7 +10,7 @@
 =========================================================================*/
 #include "vtkApertureRefinement.h"
 
-#include "vtkApertureSurface.h"
+#include "vtkApertureMeshSurface.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -77,7 +77,7 @@ public:
       {
         it->GetCurrentCell(npts, ids);
         local.clear();
-        vtkApertureSurface::Triangulate(
+        vtkApertureMeshSurface::Triangulate(
           npts, ids, strip, this->Input->GetPoints(), this->Finite.data(), local);
         for (const vtkIdType k : local)
         {
@@ -328,7 +328,7 @@ double vtkApertureRefinement::LongestEdge(vtkPolyData* input)
       it->GetCurrentCell(npts, ids);
       local.clear();
       // Fans are enough to measure edges, and need no finite points.
-      vtkApertureSurface::Triangulate(npts, ids, strip, nullptr, nullptr, local);
+      vtkApertureMeshSurface::Triangulate(npts, ids, strip, nullptr, nullptr, local);
       for (size_t k = 0; k < local.size(); ++k)
       {
         double a[3], b[3];

@@ -11,7 +11,9 @@
 #include "vtkLightSphereVisibility.h"
 
 #include "vtkApertureDistributedOccluders.h"
+#include "vtkApertureSceneSurfaces.h"
 #include "vtkApertureSurface.h"
+#include "vtkApertureSurfaceOutput.h"
 #include "vtkLightSphere.h"
 #include "vtkRayCastVisibility.h"
 
@@ -173,8 +175,11 @@ bool vtkLightSphereVisibility::UpdateCache(
     return true;
   }
   in.Key.clear();
-  if (!vtkApertureSurface::SetScene(
-        input, occluders, this->FeatureAngle, this->RayOffset, in.Receivers, in.Occluders, error))
+  vtkApertureSceneSurfaces::Settings settings;
+  settings.FeatureAngle = this->FeatureAngle;
+  settings.RayOffset = this->RayOffset;
+  if (!vtkApertureSceneSurfaces::Build(
+        input, occluders, settings, in.Receivers, in.Occluders, error))
   {
     return false;
   }
@@ -337,10 +342,10 @@ void vtkLightSphereVisibility::WriteOutputs(
   vtkInternals& in = *this->Internals;
   const int k = static_cast<int>(directions.size());
   std::vector<vtkIdType> points;
-  in.Receivers.MakeOutput(input, output, points);
+  vtkApertureSurfaceOutput::Make(in.Receivers, input, output, points);
   const vtkIdType m = static_cast<vtkIdType>(points.size());
   vtkPointData* pd = output->GetPointData();
-  in.Receivers.AddComputedNormals(pd, points);
+  vtkApertureSurfaceOutput::AddComputedNormals(in.Receivers, pd, points);
   const Sees sees{ in.Receivers, points, in.Done, in.Computed, directions };
   if (this->ComputeVisibility)
   {

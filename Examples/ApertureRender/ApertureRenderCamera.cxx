@@ -10,6 +10,7 @@
 =========================================================================*/
 #include "ApertureRenderCamera.h"
 
+#include "vtkApertureMeshSurface.h"
 #include "vtkApertureSurface.h"
 #include "vtkCellArray.h"
 #include "vtkMath.h"
@@ -46,7 +47,7 @@ Faces FacesOf(vtkPolyData* mesh)
     for (cells->InitTraversal(); cells->GetNextCell(npts, ids);)
     {
       local.clear();
-      vtkApertureSurface::Triangulate(npts, ids, strip, nullptr, nullptr, local);
+      vtkApertureMeshSurface::Triangulate(npts, ids, strip, nullptr, nullptr, local);
       for (size_t t = 0; t < local.size(); t += 3)
       {
         double p[3][3], e1[3], e2[3], n[3];

@@ -22,7 +22,9 @@
 // --quick runs a few points only (a smoke test that the benchmark still works).
 
 #include "vtkApertureBenchmarkMemory.h"
+#include "vtkApertureMeshSurface.h"
 #include "vtkAperturePrecompute.h"
+#include "vtkApertureRayOffsets.h"
 #include "vtkApertureRayPacket.h"
 #include "vtkApertureRaySampler.h"
 #include "vtkApertureRayScene.h"
@@ -145,7 +147,7 @@ public:
     for (vtkIdType p = begin; p < end; ++p)
     {
       int count = 0;
-      const float back = this->Rules ? vtkApertureRayScene::PullBack * this->R.Offsets[p] : 0.0f;
+      const float back = this->Rules ? vtkApertureRayOffsets::PullBack * this->R.Offsets[p] : 0.0f;
       for (int first = 0; first < this->PerPoint; first += Lanes)
       {
         for (int lane = 0; lane < Lanes; ++lane)
@@ -219,8 +221,8 @@ Rays PrepareRays(vtkPolyData* mesh, int perPoint, vtkApertureSurface& surface)
   const double* b = mesh->GetBounds();
   const double origin[3] = { 0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]) };
   std::string error;
-  surface.SetPolyData(mesh, origin, defaults->GetFeatureAngle(), error);
-  surface.SetRayOffset(defaults->GetRayOffset());
+  vtkApertureMeshSurface::Set(surface, mesh, origin, defaults->GetFeatureAngle(), error);
+  vtkApertureRayOffsets::Set(surface, defaults->GetRayOffset());
   const vtkApertureRaySampler sampler(perPoint, defaults->GetSeed(), false);
   Rays rays;
   vtkApertureRaySampler::Point point;
@@ -278,8 +280,8 @@ double RunIntake(vtkPolyData* mesh, int repeats)
       vtkApertureSurface surface;
       const double origin[3] = { 0.0, 0.0, 0.0 };
       std::string error;
-      surface.SetPolyData(mesh, origin, defaults->GetFeatureAngle(), error);
-      surface.SetRayOffset(defaults->GetRayOffset());
+      vtkApertureMeshSurface::Set(surface, mesh, origin, defaults->GetFeatureAngle(), error);
+      vtkApertureRayOffsets::Set(surface, defaults->GetRayOffset());
     },
     repeats);
 }

@@ -20,6 +20,7 @@
 #include "vtkAperturePrecompute.h"
 #include "vtkApertureRayPacket.h"
 #include "vtkApertureRayScene.h"
+#include "vtkApertureSceneSurfaces.h"
 #include "vtkApertureSurface.h"
 #include "vtkApertureTestHarness.h"
 #include "vtkEnvironmentMap.h"
@@ -74,15 +75,14 @@ int TestEnvironmentSkyAccuracy(int argc, char* argv[])
   // above the vertex's tangent plane, on every 8th vertex. Its only error is the pixel grid, far
   // below what is compared here; a 1024-ray Monte-Carlo estimate would be noisier (two seeds
   // differ by 8.6% on this map) than the methods under test.
-  double bounds[6], origin[3];
-  vtkApertureSurface::InitializeBounds(bounds);
-  vtkApertureSurface::ExpandBounds(surface, bounds);
-  vtkApertureSurface::OriginOf(bounds, origin);
+  vtkApertureSceneSurfaces::Settings settings;
+  settings.FeatureAngle = apertures->GetFeatureAngle();
+  settings.RayOffset = apertures->GetRayOffset();
   vtkApertureSurface mesh;
+  std::vector<vtkApertureSurface> none;
   std::string error;
   vtkApertureRayScene scene;
-  bool ready = mesh.SetPolyData(surface, origin, apertures->GetFeatureAngle(), error);
-  mesh.SetRayOffset(apertures->GetRayOffset());
+  bool ready = vtkApertureSceneSurfaces::Build(surface, {}, settings, mesh, none, error);
   ready = ready && scene.Build(mesh, {});
   if (!ready)
   {

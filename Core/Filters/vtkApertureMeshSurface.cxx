@@ -1,0 +1,904 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    vtkApertureMeshSurface.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkApertureMeshSurface.h"
+
+#include "vtkApertureCellCheck.h"
+#include "vtkApertureSurface.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkFloatArray.h"
+#include "vtkMath.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolygon.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+
+namespace
+{
+// Union-find over small index sets (the triangles around one vertex).
+struct Classes
+{
+  std::vector<int> Parent;
+  void Reset(size_t n)
+  {
+    this->Parent.resize(n);
+    std::iota(this->Parent.begin(), this->Parent.end(), 0);
+  }
+  int Find(int i)
+  {
+    while (this->Parent[i] != i)
+    {
+      i = this->Parent[i] = this->Parent[this->Parent[i]];
+    }
+    return i;
+  }
+  void Unite(int a, int b) { this->Parent[this->Find(a)] = this->Find(b); }
+};
+
+// The sides of one vertex (groups of its triangles): each triangle's side, each side's sum of
+// unit face normals and area, the vertex's area-weighted normal and total area.
+struct Sides
+{
+  std::vector<int> Of;
+  std::vector<std::array<double, 3>> Sums;
+  std::vector<double> Areas;
+  double VertexNormal[3] = { 0.0, 0.0, 0.0 };
+  double Total = 0.0;
+};
+}
+
+//------------------------------------------------------------------------------
+// The steps of Set(), with what they share.
+namespace
+{
+struct Build
+{
+  vtkApertureSurface& S;
+  vtkPolyData* Input;
+  vtkIdType N;
+  std::vector<double> World;         // input points, 3 each
+  std::vector<unsigned char> Finite; // per input point
+  std::vector<std::uint32_t>
+    VertexOf; // per input point (vtkApertureSurface::NoVertex when not finite)
+  std::vector<vtkIdType> VertexInput;   // an input point of each vertex
+  std::vector<unsigned char> OnSurface; // input point used by a polygon or strip
+  // 32-bit where the size limits of Set() allow: the triangles dominate the memory.
+  std::vector<std::uint32_t> TriInput;  // every triangle's input points, 3 each
+  std::vector<std::uint32_t> TriCell;   // its polygon or strip
+  std::vector<std::uint32_t> TriCorner; // the connectivity index of each corner
+  std::vector<vtkIdType> TriPoint;      // the receiving point of each corner (-1: none)
+  std::vector<std::uint32_t> Geometry;  // triangles with three distinct vertices
+  std::vector<float> FaceNormals;       // unit (or zero) normal of each geometry triangle
+  std::vector<float> FaceAreas;
+  std::vector<vtkIdType> IncidentStart;    // per vertex, into Incident
+  std::vector<std::uint32_t> Incident;     // 3 * geometry triangle + corner
+  std::vector<vtkIdType> VertexFirstPoint; // each vertex's first receiving point (-1: none)
+  vtkIdType Corners = 0;                   // polygon corners, then strip corners
+  vtkIdType Polygons = 0;                  // cells before the first strip
+
+  Build(vtkApertureSurface& surface, vtkPolyData* input)
+    : S(surface)
+    , Input(input)
+    , N(input->GetNumberOfPoints())
+  {
+  }
+
+  vtkIdType Vertex(vtkIdType triangle, int corner) const
+  {
+    return this->VertexOf[this->TriInput[3 * triangle + corner]];
+  }
+
+  void Weld();
+  void Triangulate();
+  void AddCellTriangles(vtkIdType npts, const vtkIdType* ids, bool strip,
+    std::vector<vtkIdType>& local, vtkIdType cell);
+  void SelectGeometry();
+  vtkIdType Neighbour(vtkIdType corner, int step) const;
+  void Orient();
+  bool Consistent() const;
+  std::vector<std::vector<std::pair<vtkIdType, bool>>> ManifoldNeighbours() const;
+  void FlipPieces(const std::vector<std::vector<std::pair<vtkIdType, bool>>>& next);
+  void ComputeFaceNormals();
+  void FindIncident();
+  void SidesFromCreases(double cosAngle);
+  void GroupCreaseFaces(
+    const std::uint32_t* corners, int m, double cosAngle, Classes& classes) const;
+  void SumSides(const std::uint32_t* corners, int m, Classes& classes, Sides& sides) const;
+  void MakeSidePoints(vtkIdType v, const Sides& sides, std::vector<vtkIdType>& pointOfSide);
+  void SidesFromNormals(vtkDataArray* normals, double cosAngle);
+  vtkIdType AddPoint(vtkIdType vertex, unsigned int side, const double normal[3]);
+  void MapInputPoints();
+  void PointOfEachInput();
+  void CornerPoints();
+  void StripTriangles();
+};
+}
+
+//------------------------------------------------------------------------------
+// Points at the same position become one vertex, numbered in the order of their first point.
+void Build::Weld()
+{
+  vtkPoints* points = this->Input->GetPoints();
+  this->World.resize(3 * this->N);
+  this->Finite.assign(this->N, 0);
+  std::vector<vtkIdType> order;
+  for (vtkIdType i = 0; i < this->N; ++i)
+  {
+    points->GetPoint(i, &this->World[3 * i]);
+    this->Finite[i] = vtkApertureSurface::IsFinite(&this->World[3 * i]);
+    if (this->Finite[i])
+    {
+      order.push_back(i);
+    }
+  }
+  const double* w = this->World.data();
+  std::sort(order.begin(), order.end(),
+    [w](vtkIdType a, vtkIdType b)
+    {
+      const double* p = w + 3 * a;
+      const double* q = w + 3 * b;
+      return std::make_tuple(p[0], p[1], p[2], a) < std::make_tuple(q[0], q[1], q[2], b);
+    });
+  std::vector<vtkIdType> first(this->N, -1);
+  for (size_t k = 0; k < order.size(); ++k)
+  {
+    const bool same = k > 0 && w[3 * order[k]] == w[3 * order[k - 1]] &&
+      w[3 * order[k] + 1] == w[3 * order[k - 1] + 1] &&
+      w[3 * order[k] + 2] == w[3 * order[k - 1] + 2];
+    first[order[k]] = same ? first[order[k - 1]] : order[k];
+  }
+  this->VertexOf.assign(this->N, vtkApertureSurface::NoVertex);
+  for (vtkIdType i = 0; i < this->N; ++i)
+  {
+    if (this->Finite[i] && first[i] == i)
+    {
+      this->VertexOf[i] = static_cast<std::uint32_t>(this->VertexInput.size());
+      this->VertexInput.push_back(i);
+    }
+  }
+  for (vtkIdType i = 0; i < this->N; ++i)
+  {
+    if (this->Finite[i])
+    {
+      this->VertexOf[i] = this->VertexOf[first[i]];
+    }
+  }
+  const vtkIdType vertices = static_cast<vtkIdType>(this->VertexInput.size());
+  this->S.Vertices.assign(3 * vertices + 1, 0.0f);
+  for (vtkIdType v = 0; v < vertices; ++v)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      this->S.Vertices[3 * v + k] =
+        static_cast<float>(w[3 * this->VertexInput[v] + k] - this->S.Origin[k]);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+// Every polygon and strip as triangles of input points, remembering their cell and corners.
+void Build::Triangulate()
+{
+  this->OnSurface.assign(this->N, 0);
+  std::vector<vtkIdType> local;
+  vtkIdType cell = 0;
+  this->Polygons = this->Input->GetNumberOfPolys();
+  for (vtkCellArray* cells : { this->Input->GetPolys(), this->Input->GetStrips() })
+  {
+    const bool strip = cells == this->Input->GetStrips();
+    vtkIdType npts;
+    const vtkIdType* ids;
+    auto it = vtk::TakeSmartPointer(cells->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cell)
+    {
+      it->GetCurrentCell(npts, ids);
+      this->AddCellTriangles(npts, ids, strip, local, cell);
+      this->Corners += npts;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void Build::AddCellTriangles(
+  vtkIdType npts, const vtkIdType* ids, bool strip, std::vector<vtkIdType>& local, vtkIdType cell)
+{
+  for (vtkIdType k = 0; k < npts; ++k)
+  {
+    this->OnSurface[ids[k]] = 1;
+  }
+  local.clear();
+  vtkApertureMeshSurface::Triangulate(
+    npts, ids, strip, this->Input->GetPoints(), this->Finite.data(), local);
+  for (size_t t = 0; t < local.size(); t += 3)
+  {
+    const vtkIdType* k = &local[t];
+    if (this->Finite[ids[k[0]]] && this->Finite[ids[k[1]]] && this->Finite[ids[k[2]]])
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        this->TriInput.push_back(ids[k[c]]);
+        this->TriCorner.push_back(this->Corners + k[c]);
+      }
+      this->TriCell.push_back(cell);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureMeshSurface::Triangulate(vtkIdType npts, const vtkIdType* ids, bool strip,
+  vtkPoints* points, const unsigned char* finite, std::vector<vtkIdType>& triangles)
+{
+  auto add = [&triangles](vtkIdType a, vtkIdType b, vtkIdType c)
+  {
+    triangles.push_back(a);
+    triangles.push_back(b);
+    triangles.push_back(c);
+  };
+  if (strip)
+  {
+    for (vtkIdType k = 0; k + 2 < npts; ++k)
+    {
+      k % 2 == 0 ? add(k, k + 1, k + 2) : add(k + 1, k, k + 2);
+    }
+    return;
+  }
+  bool allFinite = true;
+  for (vtkIdType k = 0; k < npts && finite; ++k)
+  {
+    allFinite = allFinite && finite[ids[k]];
+  }
+  if (npts > 3 && allFinite && points)
+  {
+    vtkNew<vtkPolygon> polygon;
+    vtkNew<vtkIdList> local;
+    polygon->Initialize(static_cast<int>(npts), ids, points);
+    if (polygon->Triangulate(local) && local->GetNumberOfIds() == 3 * (npts - 2))
+    {
+      for (vtkIdType t = 0; t < local->GetNumberOfIds(); t += 3)
+      {
+        add(local->GetId(t), local->GetId(t + 1), local->GetId(t + 2));
+      }
+      return;
+    }
+  }
+  for (vtkIdType k = 1; k + 1 < npts; ++k)
+  {
+    add(0, k, k + 1);
+  }
+}
+
+//------------------------------------------------------------------------------
+// The triangles with three distinct vertices: the geometry.
+void Build::SelectGeometry()
+{
+  const vtkIdType triangles = static_cast<vtkIdType>(this->TriCell.size());
+  for (vtkIdType t = 0; t < triangles; ++t)
+  {
+    const vtkIdType a = this->Vertex(t, 0), b = this->Vertex(t, 1), c = this->Vertex(t, 2);
+    if (a != b && b != c && c != a)
+    {
+      this->Geometry.push_back(t);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+// The other end of corner `corner` (3 * g + k)'s outgoing (next) or incoming edge.
+vtkIdType Build::Neighbour(vtkIdType corner, int step) const
+{
+  return this->Vertex(this->Geometry[corner / 3], static_cast<int>((corner % 3 + step) % 3));
+}
+
+//------------------------------------------------------------------------------
+// Winds the triangles consistently across manifold edges, so that every triangle has a front.
+// Each connected piece keeps the winding most of its triangles had.
+void Build::Orient()
+{
+  if (!this->Consistent())
+  {
+    this->FlipPieces(this->ManifoldNeighbours());
+    this->FindIncident(); // the corners of flipped triangles moved
+  }
+}
+
+//------------------------------------------------------------------------------
+// Consistent when no two triangles leave a vertex along the same edge.
+bool Build::Consistent() const
+{
+  const vtkIdType vertices = static_cast<vtkIdType>(this->IncidentStart.size()) - 1;
+  std::vector<vtkIdType> ends;
+  for (vtkIdType v = 0; v < vertices; ++v)
+  {
+    ends.clear();
+    for (vtkIdType c = this->IncidentStart[v]; c < this->IncidentStart[v + 1]; ++c)
+    {
+      ends.push_back(this->Neighbour(this->Incident[c], 1));
+    }
+    std::sort(ends.begin(), ends.end());
+    if (std::adjacent_find(ends.begin(), ends.end()) != ends.end())
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Each geometry triangle's neighbours across manifold edges (v, x), v < x, and whether the two
+// run the edge in opposite directions (agree on their winding).
+std::vector<std::vector<std::pair<vtkIdType, bool>>> Build::ManifoldNeighbours() const
+{
+  const vtkIdType vertices = static_cast<vtkIdType>(this->IncidentStart.size()) - 1;
+  std::vector<std::vector<std::pair<vtkIdType, bool>>> next(this->Geometry.size());
+  std::vector<std::pair<vtkIdType, vtkIdType>> edges; // (x, corner)
+  for (vtkIdType v = 0; v < vertices; ++v)
+  {
+    edges.clear();
+    for (vtkIdType c = this->IncidentStart[v]; c < this->IncidentStart[v + 1]; ++c)
+    {
+      for (int step : { 1, 2 })
+      {
+        const vtkIdType x = this->Neighbour(this->Incident[c], step);
+        if (x > v)
+        {
+          const vtkIdType corner = this->Incident[c];
+          edges.emplace_back(x, step == 1 ? corner : -1 - corner);
+        }
+      }
+    }
+    std::sort(edges.begin(), edges.end());
+    for (size_t e = 0; e + 1 < edges.size(); ++e)
+    {
+      const bool pair = edges[e].first == edges[e + 1].first &&
+        (e + 2 == edges.size() || edges[e + 2].first != edges[e].first) &&
+        (e == 0 || edges[e - 1].first != edges[e].first);
+      if (pair)
+      {
+        // Corners >= 0 run the edge v -> x, the others x -> v.
+        const vtkIdType a = edges[e].second, b = edges[e + 1].second;
+        const vtkIdType ga = (a >= 0 ? a : -1 - a) / 3, gb = (b >= 0 ? b : -1 - b) / 3;
+        const bool agree = (a >= 0) != (b >= 0);
+        next[ga].emplace_back(gb, agree);
+        next[gb].emplace_back(ga, agree);
+      }
+    }
+  }
+  return next;
+}
+
+//------------------------------------------------------------------------------
+// Walks each connected piece from a seed, marking the triangles whose winding differs from the
+// seed's, then flips the minority.
+void Build::FlipPieces(const std::vector<std::vector<std::pair<vtkIdType, bool>>>& next)
+{
+  std::vector<signed char> flip(this->Geometry.size(), -1);
+  for (size_t seed = 0; seed < this->Geometry.size(); ++seed)
+  {
+    if (flip[seed] >= 0)
+    {
+      continue;
+    }
+    std::vector<vtkIdType> piece = { static_cast<vtkIdType>(seed) };
+    flip[seed] = 0;
+    size_t flipped = 0;
+    for (size_t k = 0; k < piece.size(); ++k)
+    {
+      for (const auto& neighbour : next[piece[k]])
+      {
+        if (flip[neighbour.first] < 0)
+        {
+          flip[neighbour.first] = static_cast<signed char>(flip[piece[k]] ^ !neighbour.second);
+          flipped += flip[neighbour.first];
+          piece.push_back(neighbour.first);
+        }
+      }
+    }
+    const bool invert = 2 * flipped > piece.size();
+    for (const vtkIdType g : piece)
+    {
+      if (flip[g] != invert)
+      {
+        const vtkIdType t = this->Geometry[g];
+        std::swap(this->TriInput[3 * t + 1], this->TriInput[3 * t + 2]);
+        std::swap(this->TriCorner[3 * t + 1], this->TriCorner[3 * t + 2]);
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void Build::ComputeFaceNormals()
+{
+  this->FaceNormals.assign(3 * this->Geometry.size(), 0.0);
+  this->FaceAreas.assign(this->Geometry.size(), 0.0);
+  for (size_t g = 0; g < this->Geometry.size(); ++g)
+  {
+    double p[3][3];
+    for (int k = 0; k < 3; ++k)
+    {
+      const float* v = &this->S.Vertices[3 * this->Vertex(this->Geometry[g], k)];
+      std::copy(v, v + 3, p[k]);
+    }
+    const double e1[3] = { p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2] };
+    const double e2[3] = { p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2] };
+    double n[3];
+    vtkMath::Cross(e1, e2, n);
+    const double length = vtkMath::Normalize(n);
+    const bool area = length > 0.0; // zero area: no direction
+    this->FaceAreas[g] = area ? static_cast<float>(0.5 * length) : 0.0f;
+    for (int k = 0; k < 3; ++k)
+    {
+      this->FaceNormals[3 * g + k] = area ? static_cast<float>(n[k]) : 0.0f;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+// The geometry triangle corners around each vertex (3 * g + corner).
+void Build::FindIncident()
+{
+  const vtkIdType vertices = static_cast<vtkIdType>(this->VertexInput.size());
+  this->IncidentStart.assign(vertices + 1, 0);
+  for (size_t g = 0; g < this->Geometry.size(); ++g)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      ++this->IncidentStart[this->Vertex(this->Geometry[g], k) + 1];
+    }
+  }
+  std::partial_sum(
+    this->IncidentStart.begin(), this->IncidentStart.end(), this->IncidentStart.begin());
+  this->Incident.resize(3 * this->Geometry.size());
+  std::vector<vtkIdType> fill(this->IncidentStart.begin(), this->IncidentStart.end() - 1);
+  for (size_t g = 0; g < this->Geometry.size(); ++g)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Incident[fill[this->Vertex(this->Geometry[g], k)]++] =
+        3 * static_cast<vtkIdType>(g) + k;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkIdType Build::AddPoint(vtkIdType vertex, unsigned int side, const double normal[3])
+{
+  const vtkIdType id = static_cast<vtkIdType>(this->S.PointVertex.size());
+  this->S.PointVertex.push_back(static_cast<std::uint32_t>(vertex));
+  this->S.Key.push_back(
+    vtkApertureSurface::PointKey(&this->World[3 * this->VertexInput[vertex]], side));
+  double n[3] = { normal[0], normal[1], normal[2] };
+  const double length = vtkMath::Normalize(n);
+  const bool valid = length > 0.0 && std::isfinite(length);
+  this->S.Valid.push_back(valid ? 1 : 0);
+  for (int k = 0; k < 3; ++k)
+  {
+    this->S.Normals->InsertNextValue(valid ? static_cast<float>(n[k]) : 0.0f);
+  }
+  if (this->VertexFirstPoint[vertex] < 0)
+  {
+    this->VertexFirstPoint[vertex] = id;
+  }
+  return id;
+}
+
+//------------------------------------------------------------------------------
+// Computed normals: around each vertex, triangles of one cell, or across an edge whose faces
+// are within the feature angle, are one side; each side's normal sums its unit face normals.
+void Build::SidesFromCreases(double cosAngle)
+{
+  Classes classes;
+  Sides sides;
+  std::vector<vtkIdType> pointOfSide;
+  for (vtkIdType v = 0; v + 1 < static_cast<vtkIdType>(this->IncidentStart.size()); ++v)
+  {
+    const std::uint32_t* corners = this->Incident.data() + this->IncidentStart[v];
+    const int m = static_cast<int>(this->IncidentStart[v + 1] - this->IncidentStart[v]);
+    if (m == 0)
+    {
+      continue; // in no triangle: its points are on no surface, or only in degenerate cells
+    }
+    this->GroupCreaseFaces(corners, m, cosAngle, classes);
+    this->SumSides(corners, m, classes, sides);
+    this->MakeSidePoints(v, sides, pointOfSide);
+    for (int i = 0; i < m; ++i)
+    {
+      this->TriPoint[3 * this->Geometry[corners[i] / 3] + corners[i] % 3] =
+        pointOfSide[sides.Of[i]];
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+// The m triangles around a vertex (`corners`, 3 * geometry triangle + corner) in classes: those
+// of one polygon, and those across an edge whose faces are within the feature angle.
+void Build::GroupCreaseFaces(
+  const std::uint32_t* corners, int m, double cosAngle, Classes& classes) const
+{
+  classes.Reset(m);
+  auto triangle = [&](int i) { return this->Geometry[corners[i] / 3]; };
+  std::vector<std::pair<vtkIdType, int>> keyed;
+  for (int i = 0; i < m; ++i)
+  {
+    // Polygons are one face each; a strip's triangles are faces of their own.
+    const vtkIdType cell = this->TriCell[triangle(i)];
+    keyed.emplace_back(cell < this->Polygons ? cell : -1 - i, i);
+  }
+  std::sort(keyed.begin(), keyed.end());
+  for (int i = 1; i < m; ++i)
+  {
+    if (keyed[i].first == keyed[i - 1].first)
+    {
+      classes.Unite(keyed[i].second, keyed[i - 1].second);
+    }
+  }
+  // Triangles sharing an edge (v, x), by the other end x.
+  keyed.clear();
+  for (int i = 0; i < m; ++i)
+  {
+    const int corner = static_cast<int>(corners[i] % 3);
+    keyed.emplace_back(this->Vertex(triangle(i), (corner + 1) % 3), i);
+    keyed.emplace_back(this->Vertex(triangle(i), (corner + 2) % 3), i);
+  }
+  std::sort(keyed.begin(), keyed.end());
+  for (size_t a = 0; a < keyed.size(); ++a)
+  {
+    for (size_t b = a + 1; b < keyed.size() && keyed[b].first == keyed[a].first; ++b)
+    {
+      const float* na = &this->FaceNormals[corners[keyed[a].second] / 3 * 3];
+      const float* nb = &this->FaceNormals[corners[keyed[b].second] / 3 * 3];
+      if (vtkMath::Dot(na, na) > 0.0f && vtkMath::Dot(na, nb) >= cosAngle)
+      {
+        classes.Unite(keyed[a].second, keyed[b].second);
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+// The classes of the m triangles around a vertex as its sides, numbered in the order met.
+void Build::SumSides(const std::uint32_t* corners, int m, Classes& classes, Sides& sides) const
+{
+  sides.Of.resize(m);
+  sides.Sums.clear();
+  sides.Areas.clear();
+  std::fill(sides.VertexNormal, sides.VertexNormal + 3, 0.0);
+  sides.Total = 0.0;
+  std::vector<int> sideOfRoot(m, -1);
+  for (int i = 0; i < m; ++i)
+  {
+    const int root = classes.Find(i);
+    if (sideOfRoot[root] < 0)
+    {
+      sideOfRoot[root] = static_cast<int>(sides.Sums.size());
+      sides.Sums.push_back({ 0.0, 0.0, 0.0 });
+      sides.Areas.push_back(0.0);
+    }
+    const int side = sides.Of[i] = sideOfRoot[root];
+    const float* n = &this->FaceNormals[corners[i] / 3 * 3];
+    const double area = this->FaceAreas[corners[i] / 3];
+    for (int k = 0; k < 3; ++k)
+    {
+      sides.Sums[side][k] += n[k];
+      sides.VertexNormal[k] += area * n[k];
+    }
+    sides.Areas[side] += area;
+    sides.Total += area;
+  }
+}
+
+//------------------------------------------------------------------------------
+// One receiving point per side of a vertex, but a side without a direction, or a fold (a small
+// side facing against a clearly oriented vertex: a scan's folded triangle, not a crease), joins
+// the vertex's largest side.
+void Build::MakeSidePoints(vtkIdType v, const Sides& sides, std::vector<vtkIdType>& pointOfSide)
+{
+  const std::vector<std::array<double, 3>>& sums = sides.Sums;
+  const std::vector<double>& areas = sides.Areas;
+  const double* vertexNormal = sides.VertexNormal;
+  const double total = sides.Total;
+  const size_t largest = std::max_element(areas.begin(), areas.end()) - areas.begin();
+  const bool oriented = vtkMath::Norm(vertexNormal) > 0.5 * total;
+  auto joins = [&](size_t s)
+  {
+    const bool fold = oriented && s != largest && areas[s] < 0.25 * total &&
+      vtkMath::Dot(sums[s].data(), vertexNormal) < 0.0;
+    return fold || !(vtkMath::Dot(sums[s].data(), sums[s].data()) > 0.0);
+  };
+  // The sides in the order of their directions, whatever the order of the triangles, so that
+  // the same surface in another cell order (strips, triangles) casts the same rays.
+  std::vector<size_t> order(sums.size());
+  std::iota(order.begin(), order.end(), 0);
+  auto direction = [&sums](size_t s)
+  {
+    const double length = vtkMath::Norm(sums[s].data());
+    std::array<double, 3> d;
+    for (int k = 0; k < 3; ++k)
+    {
+      d[k] = length > 0.0 ? std::round(1e6 * sums[s][k] / length) : 0.0;
+    }
+    return d;
+  };
+  std::sort(order.begin(), order.end(),
+    [&direction](size_t a, size_t b) { return direction(a) < direction(b); });
+  pointOfSide.assign(sums.size(), -1);
+  unsigned int ordinal = 0;
+  for (const size_t s : order)
+  {
+    if (!joins(s))
+    {
+      pointOfSide[s] = this->AddPoint(v, ordinal++, sums[s].data());
+    }
+  }
+  const double none[3] = { 0.0, 0.0, 0.0 };
+  const vtkIdType fallback = pointOfSide[largest] >= 0
+    ? pointOfSide[largest]
+    : (this->VertexFirstPoint[v] >= 0 ? this->VertexFirstPoint[v]
+                                      : this->AddPoint(v, ordinal, none));
+  for (vtkIdType& point : pointOfSide)
+  {
+    point = point >= 0 ? point : fallback;
+  }
+}
+
+//------------------------------------------------------------------------------
+// Given normals: the points welded into a vertex whose normals are within the feature angle are
+// one side (a point's normal is never split); its normal is the sum of theirs.
+void Build::SidesFromNormals(vtkDataArray* normals, double cosAngle)
+{
+  std::vector<vtkIdType> cluster(this->N, -1);
+  for (vtkIdType v = 0; v + 1 < static_cast<vtkIdType>(this->IncidentStart.size()); ++v)
+  {
+    // The distinct input points at v, each with its unit normal (zero if it has none).
+    std::vector<vtkIdType> members;
+    for (vtkIdType c = this->IncidentStart[v]; c < this->IncidentStart[v + 1]; ++c)
+    {
+      const vtkIdType corner = this->Incident[c];
+      members.push_back(this->TriInput[3 * this->Geometry[corner / 3] + corner % 3]);
+    }
+    if (members.empty())
+    {
+      continue;
+    }
+    std::sort(members.begin(), members.end());
+    members.erase(std::unique(members.begin(), members.end()), members.end());
+    std::vector<std::array<double, 3>> unit(members.size()), sums;
+    std::vector<int> sideOf(members.size(), -1);
+    std::vector<size_t> firstOf; // each side's first member
+    for (size_t i = 0; i < members.size(); ++i)
+    {
+      normals->GetTuple(members[i], unit[i].data());
+      const double length = vtkMath::Normalize(unit[i].data());
+      if (!(length > 0.0) || !std::isfinite(length))
+      {
+        continue;
+      }
+      for (size_t s = 0; s < sums.size() && sideOf[i] < 0; ++s)
+      {
+        // Against the side's first normal: a greedy clustering, deterministic in point order.
+        if (vtkMath::Dot(unit[i].data(), unit[firstOf[s]].data()) >= cosAngle)
+        {
+          sideOf[i] = static_cast<int>(s);
+        }
+      }
+      if (sideOf[i] < 0)
+      {
+        sideOf[i] = static_cast<int>(sums.size());
+        sums.push_back({ 0.0, 0.0, 0.0 });
+        firstOf.push_back(i);
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        sums[sideOf[i]][k] += unit[i][k];
+      }
+    }
+    std::vector<vtkIdType> pointOfSide(sums.size());
+    for (size_t s = 0; s < sums.size(); ++s)
+    {
+      pointOfSide[s] = this->AddPoint(v, static_cast<unsigned int>(s), sums[s].data());
+    }
+    const double none[3] = { 0.0, 0.0, 0.0 };
+    const vtkIdType fallback = sums.empty() ? this->AddPoint(v, 0, none) : pointOfSide.front();
+    for (size_t i = 0; i < members.size(); ++i)
+    {
+      cluster[members[i]] = sideOf[i] >= 0 ? pointOfSide[sideOf[i]] : fallback;
+    }
+  }
+  for (const vtkIdType t : this->Geometry)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      this->TriPoint[3 * t + k] = cluster[this->TriInput[3 * t + k]];
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+// Each input point's receiving point (the first of its corners'), the corners' for
+// vtkApertureSurfaceOutput, and the geometry for Embree.
+void Build::MapInputPoints()
+{
+  this->PointOfEachInput();
+  this->CornerPoints();
+  if (this->S.BreakStrips)
+  {
+    this->StripTriangles();
+  }
+  for (const vtkIdType t : this->Geometry)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      this->S.Triangles.push_back(static_cast<std::uint32_t>(this->Vertex(t, k)));
+      this->S.CornerPoints.push_back(static_cast<std::uint32_t>(this->TriPoint[3 * t + k]));
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+// Each input point's receiving point: the first of its corners' sides, in their order;
+// vtkApertureSurface::Invalid where not finite or without a normal,
+// vtkApertureSurface::NotOnSurface where in no cell.
+void Build::PointOfEachInput()
+{
+  std::vector<vtkIdType>& map = this->S.InputPoints;
+  map.assign(this->N, vtkApertureSurface::NotOnSurface);
+  for (size_t c = 0; c < this->TriPoint.size(); ++c)
+  {
+    // The first of its sides, in their order.
+    const vtkIdType i = this->TriInput[c];
+    if (this->TriPoint[c] >= 0 &&
+      (map[i] == vtkApertureSurface::NotOnSurface || this->TriPoint[c] < map[i]))
+    {
+      map[i] = this->TriPoint[c];
+    }
+  }
+  for (vtkIdType i = 0; i < this->N; ++i)
+  {
+    if (!this->OnSurface[i])
+    {
+      map[i] = vtkApertureSurface::NotOnSurface;
+      continue;
+    }
+    if (!this->Finite[i])
+    {
+      map[i] = vtkApertureSurface::Invalid;
+      ++this->S.NonFinitePoints;
+      continue;
+    }
+    if (map[i] == vtkApertureSurface::NotOnSurface)
+    {
+      // Only in degenerate or dropped triangles: the vertex's side, if it has one.
+      map[i] = this->VertexFirstPoint[this->VertexOf[i]];
+    }
+    if (map[i] < 0 || !this->S.Valid[map[i]])
+    {
+      map[i] = map[i] < 0 ? vtkApertureSurface::Invalid : map[i];
+      ++this->S.UndefinedNormals;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+// The cells' corners' receiving points, and whether any of them splits its point or, in a strip,
+// has triangles on different sides (the strip is then broken into triangles).
+void Build::CornerPoints()
+{
+  const std::vector<vtkIdType>& map = this->S.InputPoints;
+  std::vector<vtkIdType> corners(this->Corners, -1);
+  for (size_t c = 0; c < this->TriPoint.size(); ++c)
+  {
+    const vtkIdType at = this->TriCorner[c];
+    const bool disagree =
+      corners[at] >= 0 && this->TriPoint[c] >= 0 && corners[at] != this->TriPoint[c];
+    this->S.BreakStrips = this->S.BreakStrips || disagree;
+    corners[at] = corners[at] >= 0 ? corners[at] : this->TriPoint[c];
+  }
+  const vtkIdType polyCorners = this->Input->GetPolys()->GetNumberOfConnectivityIds();
+  std::vector<unsigned char> split(this->N, 0);
+  vtkIdType c = 0;
+  for (vtkCellArray* cells : { this->Input->GetPolys(), this->Input->GetStrips() })
+  {
+    vtkIdType npts;
+    const vtkIdType* ids;
+    auto it = vtk::TakeSmartPointer(cells->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      it->GetCurrentCell(npts, ids);
+      for (vtkIdType k = 0; k < npts; ++k, ++c)
+      {
+        corners[c] = corners[c] >= 0 ? corners[c] : map[ids[k]];
+        split[ids[k]] |= corners[c] != map[ids[k]] ? 1 : 0;
+      }
+    }
+  }
+  this->S.SplitPoints = std::count(split.begin(), split.end(), 1);
+  if (this->S.SplitPoints > 0 || this->S.BreakStrips)
+  {
+    this->S.PolyCorners.assign(corners.begin(), corners.begin() + polyCorners);
+    this->S.StripCorners.assign(corners.begin() + polyCorners, corners.end());
+  }
+}
+
+//------------------------------------------------------------------------------
+// Each strip triangle with three distinct points, with its strip and its corners' points.
+void Build::StripTriangles()
+{
+  const std::vector<vtkIdType>& map = this->S.InputPoints;
+  for (size_t t = 0; t < this->TriCell.size(); ++t)
+  {
+    const std::uint32_t* in = &this->TriInput[3 * t];
+    if (this->TriCell[t] < this->Polygons || in[0] == in[1] || in[1] == in[2] || in[0] == in[2])
+    {
+      continue;
+    }
+    this->S.StripTriangles.push_back(this->TriCell[t] - this->Polygons);
+    for (int k = 0; k < 3; ++k)
+    {
+      this->S.StripTriangles.push_back(in[k]);
+      this->S.StripTriangles.push_back(
+        this->TriPoint[3 * t + k] >= 0 ? this->TriPoint[3 * t + k] : map[in[k]]);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkApertureMeshSurface::Set(vtkApertureSurface& surface, vtkPolyData* input,
+  const double origin[3], double featureAngle, std::string& error)
+{
+  const vtkIdType n = input->GetNumberOfPoints();
+  const vtkIdType corners = input->GetPolys()->GetNumberOfConnectivityIds() +
+    input->GetStrips()->GetNumberOfConnectivityIds();
+  if (n >= static_cast<vtkIdType>(vtkApertureSurface::NoVertex) ||
+    corners >= static_cast<vtkIdType>(vtkApertureSurface::NoVertex) / 3)
+  {
+    error = "more than 2^32 points, or more than 2^32 / 3 polygon and strip corners";
+    return false;
+  }
+  error = vtkApertureCellCheck::FindBadCell(input);
+  if (!error.empty())
+  {
+    return false;
+  }
+  surface.Reset(n);
+  std::copy_n(origin, 3, surface.Origin);
+  Build build(surface, input);
+  build.Weld();
+  build.Triangulate();
+  build.SelectGeometry();
+  build.FindIncident();
+  build.Orient();
+  build.ComputeFaceNormals();
+  build.TriPoint.assign(build.TriInput.size(), -1);
+  build.VertexFirstPoint.assign(build.VertexInput.size(), -1);
+  const double cosAngle = std::cos(vtkMath::RadiansFromDegrees(featureAngle));
+  vtkDataArray* given = vtkApertureSurface::GivenNormals(input);
+  surface.NormalsComputed = given == nullptr;
+  if (given)
+  {
+    build.SidesFromNormals(given, cosAngle);
+  }
+  else
+  {
+    build.SidesFromCreases(cosAngle);
+  }
+  build.MapInputPoints();
+  if (given)
+  {
+    surface.CountFlippedNormals();
+  }
+  return true;
+}
