@@ -139,40 +139,65 @@ std::vector<std::uint32_t> GridTriangles(const Grid& grid, const std::vector<uns
   return triangles;
 }
 
-// One receiving point per grid point: the given normal, or the sum of its triangles' normals.
-void SetGridPoints(vtkApertureSurface& surface, vtkImageData* input,
-  const std::vector<double>& world, const std::vector<unsigned char>& finite)
+// The receiving points, one per grid point, with the normal `normalOf(id, n)` gives.
+template <typename NormalOf>
+void FillGridPoints(vtkApertureSurface& surface, const std::vector<double>& world,
+  const std::vector<unsigned char>& finite, NormalOf normalOf)
 {
   const vtkIdType n = static_cast<vtkIdType>(finite.size());
-  const std::vector<double> sums = surface.WindingNormals(n);
-  vtkDataArray* given = vtkApertureSurface::GivenNormals(input);
-  surface.NormalsComputed = given == nullptr;
   surface.Normals->SetNumberOfTuples(n);
   surface.PointVertex.resize(n);
   surface.Valid.assign(n, 0);
   surface.Key.resize(n);
+  float* normals = surface.Normals->GetPointer(0);
   for (vtkIdType id = 0; id < n; ++id)
   {
     surface.PointVertex[id] = static_cast<std::uint32_t>(id);
     surface.Key[id] = vtkApertureSurface::PointKey(&world[3 * id], 0);
-    double nrm[3] = { sums[3 * id], sums[3 * id + 1], sums[3 * id + 2] };
-    if (given)
-    {
-      given->GetTuple(id, nrm);
-    }
+    double nrm[3];
+    normalOf(id, nrm);
     const double length = vtkMath::Normalize(nrm);
     surface.Valid[id] = finite[id] && length > 0.0 && std::isfinite(length);
     for (int k = 0; k < 3; ++k)
     {
-      surface.Normals->SetValue(3 * id + k, surface.Valid[id] ? static_cast<float>(nrm[k]) : 0.0f);
+      normals[3 * id + k] = surface.Valid[id] ? static_cast<float>(nrm[k]) : 0.0f;
     }
     surface.InputPoints[id] = id;
     surface.UndefinedNormals += (finite[id] && !surface.Valid[id]) ? 1 : 0;
   }
-  if (given)
+}
+
+// One receiving point per grid point: the given normal (read in its own type), or the sum of
+// its triangles' normals.
+void SetGridPoints(vtkApertureSurface& surface, vtkImageData* input,
+  const std::vector<double>& world, const std::vector<unsigned char>& finite)
+{
+  vtkDataArray* given = vtkApertureSurface::GivenNormals(input);
+  surface.NormalsComputed = given == nullptr;
+  if (!given)
   {
-    surface.CountFlippedNormals();
+    const std::vector<double> sums = surface.WindingNormals(static_cast<vtkIdType>(finite.size()));
+    FillGridPoints(surface, world, finite,
+      [&sums](vtkIdType id, double nrm[3]) { std::copy_n(&sums[3 * id], 3, nrm); });
+    return;
   }
+  auto fill = [&](auto* array)
+  {
+    const auto tuples = vtk::DataArrayTupleRange<3>(array);
+    FillGridPoints(surface, world, finite,
+      [&tuples](vtkIdType id, double nrm[3])
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          nrm[k] = static_cast<double>(tuples[id][k]);
+        }
+      });
+  };
+  if (!vtkArrayDispatch::Dispatch::Execute(given, fill))
+  {
+    fill(given);
+  }
+  surface.CountFlippedNormals();
 }
 }
 

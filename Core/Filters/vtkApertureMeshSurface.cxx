@@ -132,13 +132,11 @@ struct Build
 // Points at the same position become one vertex, numbered in the order of their first point.
 void Build::Weld()
 {
-  vtkPoints* points = this->Input->GetPoints();
-  this->World.resize(3 * this->N);
+  vtkApertureSurface::WorldPoints(this->Input->GetPoints(), this->World);
   this->Finite.assign(this->N, 0);
   std::vector<vtkIdType> order;
   for (vtkIdType i = 0; i < this->N; ++i)
   {
-    points->GetPoint(i, &this->World[3 * i]);
     this->Finite[i] = vtkApertureSurface::IsFinite(&this->World[3 * i]);
     if (this->Finite[i])
     {

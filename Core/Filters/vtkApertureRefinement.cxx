@@ -11,6 +11,7 @@
 #include "vtkApertureRefinement.h"
 
 #include "vtkApertureMeshSurface.h"
+#include "vtkApertureSurface.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -46,11 +47,7 @@ public:
     , Maximum2(maximumEdgeLength * maximumEdgeLength)
   {
     const vtkIdType n = input->GetNumberOfPoints();
-    this->Points.resize(3 * n);
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      input->GetPoint(i, &this->Points[3 * i]);
-    }
+    vtkApertureSurface::WorldPoints(input->GetPoints(), this->Points);
     this->Combinations.resize(n);
     this->Finite.resize(n);
     for (vtkIdType i = 0; i < n; ++i)

@@ -12,12 +12,15 @@
 
 #include "vtkApertureRaySampler.h"
 
+#include "vtkArrayDispatch.h"
+#include "vtkDataArrayRange.h"
 #include "vtkDataSet.h"
 #include "vtkFloatArray.h"
 #include "vtkMath.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 
 #include <algorithm>
 #include <cmath>
@@ -77,21 +80,53 @@ void vtkApertureSurface::OriginOf(const double bounds[6], double origin[3])
 //------------------------------------------------------------------------------
 void vtkApertureSurface::ExpandBounds(vtkPolyData* input, double bounds[6])
 {
-  vtkPoints* points = input->GetPoints();
-  const vtkIdType n = points ? points->GetNumberOfPoints() : 0;
-  double p[3];
-  for (vtkIdType i = 0; i < n; ++i)
+  vtkDataArray* data = input->GetPoints() ? input->GetPoints()->GetData() : nullptr;
+  auto expand = [bounds](auto* array)
   {
-    points->GetPoint(i, p);
-    if (!IsFinite(p))
+    for (const auto tuple : vtk::DataArrayTupleRange<3>(array))
     {
-      continue;
+      const double p[3] = { static_cast<double>(tuple[0]), static_cast<double>(tuple[1]),
+        static_cast<double>(tuple[2]) };
+      if (!IsFinite(p))
+      {
+        continue;
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        bounds[2 * k] = std::min(bounds[2 * k], p[k]);
+        bounds[2 * k + 1] = std::max(bounds[2 * k + 1], p[k]);
+      }
     }
-    for (int k = 0; k < 3; ++k)
-    {
-      bounds[2 * k] = std::min(bounds[2 * k], p[k]);
-      bounds[2 * k + 1] = std::max(bounds[2 * k + 1], p[k]);
-    }
+  };
+  if (data && !vtkArrayDispatch::Dispatch::Execute(data, expand))
+  {
+    expand(data);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureSurface::WorldPoints(vtkPoints* points, std::vector<double>& world)
+{
+  vtkDataArray* data = points ? points->GetData() : nullptr;
+  world.resize(data ? 3 * data->GetNumberOfTuples() : 0);
+  auto copy = [&world](auto* array)
+  {
+    const auto tuples = vtk::DataArrayTupleRange<3>(array);
+    vtkSMPTools::For(0, tuples.size(),
+      [&](vtkIdType first, vtkIdType last)
+      {
+        for (vtkIdType i = first; i < last; ++i)
+        {
+          for (int k = 0; k < 3; ++k)
+          {
+            world[3 * i + k] = static_cast<double>(tuples[i][k]);
+          }
+        }
+      });
+  };
+  if (data && !vtkArrayDispatch::Dispatch::Execute(data, copy))
+  {
+    copy(data);
   }
 }
 

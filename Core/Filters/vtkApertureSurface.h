@@ -55,6 +55,7 @@
 class vtkDataArray;
 class vtkDataSet;
 class vtkFloatArray;
+class vtkPoints;
 class vtkPolyData;
 
 class VTKAPERTURELIGHTINGCORE_EXPORT vtkApertureSurface
@@ -69,6 +70,12 @@ public:
   static void InitializeBounds(double bounds[6]);
   static void ExpandBounds(vtkPolyData* input, double bounds[6]);
   ///@}
+
+  /**
+   * The points' coordinates (3 each), read in their own type (float, double, integers) through
+   * vtkArrayDispatch; empty without points.
+   */
+  static void WorldPoints(vtkPoints* points, std::vector<double>& world);
 
   /**
    * The local origin of a scene: the centre of its bounds (0 for empty bounds).

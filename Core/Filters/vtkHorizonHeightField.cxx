@@ -13,7 +13,9 @@
 #include "vtkApertureValidMask.h"
 #include "vtkHorizonApertures.h"
 
+#include "vtkArrayDispatch.h"
 #include "vtkDataArray.h"
+#include "vtkDataArrayRange.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkMatrix3x3.h"
@@ -63,32 +65,90 @@ bool WorldAxes(vtkImageData* image, double axes[3][3])
   return !identity;
 }
 
-// The scaled heights and the valid flags (empty without a mask) of the texels in `window`
-// (i0, i1, j0, j1), i fastest.
-void CopyWindow(vtkImageData* image, vtkDataArray* heights, double scale, const int window[4],
-  std::vector<float>& z, std::vector<unsigned char>& valid)
+// Copies component 0 of an array over the texels of `window` (i0, i1, j0, j1), i fastest, as
+// `value(v)` gives them, in the array's own type.
+template <typename T, typename Convert>
+struct CopyWindowWorker
 {
-  const vtkIdType nx = window[1] - window[0] + 1, ny = window[3] - window[2] + 1;
-  vtkDataArray* mask = image->GetPointData()->GetArray(vtkApertureValidMask::Name());
-  z.resize(nx * ny);
-  valid.resize(mask ? nx * ny : 0);
-  vtkSMPTools::For(0, ny,
-    [&](vtkIdType first, vtkIdType last)
-    {
-      for (vtkIdType r = first; r < last; ++r)
+  vtkImageData* Image;
+  const int* Window;
+  std::vector<T>& Out;
+  Convert Value;
+
+  template <typename Array>
+  void operator()(Array* array) const
+  {
+    const auto values = vtk::DataArrayTupleRange(array);
+    const vtkIdType nx = this->Window[1] - this->Window[0] + 1;
+    const vtkIdType ny = this->Window[3] - this->Window[2] + 1;
+    this->Out.resize(nx * ny);
+    vtkSMPTools::For(0, ny,
+      [&](vtkIdType first, vtkIdType last)
       {
-        int ijk[3] = { window[0], window[2] + static_cast<int>(r), image->GetExtent()[4] };
-        const vtkIdType start = image->ComputePointId(ijk);
-        for (vtkIdType i = 0; i < nx; ++i)
+        for (vtkIdType r = first; r < last; ++r)
         {
-          z[r * nx + i] = static_cast<float>(heights->GetComponent(start + i, 0) * scale);
-          if (mask)
+          int ijk[3] = { this->Window[0], this->Window[2] + static_cast<int>(r),
+            this->Image->GetExtent()[4] };
+          const vtkIdType start = this->Image->ComputePointId(ijk);
+          for (vtkIdType i = 0; i < nx; ++i)
           {
-            valid[r * nx + i] = mask->GetComponent(start + i, 0) != 0.0 ? 1 : 0;
+            this->Out[r * nx + i] = this->Value(static_cast<double>(values[start + i][0]));
           }
         }
-      }
-    });
+      });
+  }
+};
+
+template <typename T, typename Convert>
+void CopyWindow(
+  vtkImageData* image, vtkDataArray* array, const int window[4], std::vector<T>& out, Convert value)
+{
+  const CopyWindowWorker<T, Convert> worker{ image, window, out, value };
+  if (!vtkArrayDispatch::Dispatch::Execute(array, worker))
+  {
+    worker(array);
+  }
+}
+
+// Whether `window` is the whole of the image's rows and columns.
+bool WholeImage(vtkImageData* image, const int window[4])
+{
+  const int* extent = image->GetExtent();
+  return window[0] == extent[0] && window[1] == extent[1] && window[2] == extent[2] &&
+    window[3] == extent[3];
+}
+
+// The heights the sweeps read (scaled) and their valid flags (nullptr without a mask): the
+// arrays themselves when they cover the window as the sweeps read them (float heights, unscaled;
+// an unsigned char mask), else copies in `z` and `valid`, read in the arrays' own types.
+void WindowHeights(vtkImageData* image, vtkDataArray* heights, double scale, const int window[4],
+  std::vector<float>& z, std::vector<unsigned char>& valid, vtkHorizonApertures::Grid& grid)
+{
+  const bool whole = WholeImage(image, window);
+  auto* floats = vtkFloatArray::SafeDownCast(heights);
+  if (whole && floats && floats->GetNumberOfComponents() == 1 && scale == 1.0)
+  {
+    grid.Heights = floats->GetPointer(0);
+  }
+  else
+  {
+    CopyWindow(
+      image, heights, window, z, [scale](double h) { return static_cast<float>(h * scale); });
+    grid.Heights = z.data();
+  }
+  vtkDataArray* mask = image->GetPointData()->GetArray(vtkApertureValidMask::Name());
+  auto* bytes = vtkUnsignedCharArray::SafeDownCast(mask);
+  grid.Valid = nullptr;
+  if (whole && bytes && bytes->GetNumberOfComponents() == 1)
+  {
+    grid.Valid = bytes->GetPointer(0);
+  }
+  else if (mask)
+  {
+    CopyWindow(image, mask, window, valid,
+      [](double m) { return static_cast<unsigned char>(m != 0.0 ? 1 : 0); });
+    grid.Valid = valid.data();
+  }
 }
 
 // Turns n unit vectors from the grid frame into world coordinates.
@@ -145,7 +205,7 @@ bool MakeGrid(vtkImageData* image, vtkDataArray* heights, const int extent[6], c
   grid.Ny = window[3] - window[2] + 1;
   try
   {
-    CopyWindow(image, heights, settings.HeightScale, window, z, valid);
+    WindowHeights(image, heights, settings.HeightScale, window, z, valid, grid);
   }
   catch (const std::bad_alloc&)
   {
@@ -153,8 +213,6 @@ bool MakeGrid(vtkImageData* image, vtkDataArray* heights, const int extent[6], c
       std::to_string(grid.Ny) + " texels' heights; set a MaximumDistance and stream in tiles.";
     return false;
   }
-  grid.Heights = z.data();
-  grid.Valid = valid.empty() ? nullptr : valid.data();
   grid.Dx = std::abs(image->GetSpacing()[0]);
   grid.Dy = std::abs(image->GetSpacing()[1]);
   grid.Sectors = settings.Sectors;

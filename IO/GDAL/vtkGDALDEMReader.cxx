@@ -435,8 +435,10 @@ bool vtkGDALDEMReader::ReadRows(vtkRaster& raster, const int extent[6], float* h
     const int j = extent[2] + first;
     const int fileRow = northUp ? this->Size[1] - 1 - (j + rows - 1) : j;
     float* block = heights + static_cast<vtkIdType>(first) * nx;
+    // The blocks read leave GDAL's cache: the heights are in `block` now.
     if (GDALRasterIO(raster.Band, GF_Read, extent[0], fileRow, nx, rows, block, nx, rows,
-          GDT_Float32, 0, 0) != CE_None)
+          GDT_Float32, 0, 0) != CE_None ||
+      GDALFlushRasterCache(raster.Band) != CE_None)
     {
       vtkErrorMacro("Cannot read " << vtkApertureText::QuoteName(this->FileName) << ": "
                                    << raster.Session.LastError());

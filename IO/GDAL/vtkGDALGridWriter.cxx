@@ -15,7 +15,9 @@
 #include "vtkGDALSession.h"
 
 #include "vtkAlgorithmOutput.h"
+#include "vtkArrayDispatch.h"
 #include "vtkDataArray.h"
+#include "vtkDataArrayRange.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
@@ -338,16 +340,9 @@ int vtkGDALGridWriter::Write()
       const int tile[6] = { left, std::min(whole[1], left + columns - 1),
         std::max(whole[2], top - rows + 1), top, whole[4], whole[5] };
       vtkImageData* image = this->UpdateTile(tile);
-      std::string error;
       if (!image || (!file.Dataset && !this->CreateFile(file, image, whole, arrays)) ||
         !this->WriteTile(file, image, tile, whole, arrays, buffer))
       {
-        return 0;
-      }
-      // Written blocks leave GDAL's cache, which would otherwise grow with the grid.
-      if (!file.Flush(false, error))
-      {
-        vtkErrorMacro(<< error);
         return 0;
       }
       this->UpdateProgress(++done / tiles);
@@ -390,56 +385,113 @@ bool vtkGDALGridWriter::CreateFile(
   return true;
 }
 
+namespace
+{
+// The file's blocks are this many rows high: a tile goes to GDAL this many rows at a time.
+constexpr int BlockRows = 256;
+
+// Copies component `c` of the rows of `rows` (x0, x1, y0, y1, top row first) into `buffer`, in
+// the array's own type.
+struct CopyRows
+{
+  vtkImageData* Image;
+  const int* Rows;
+  int Component;
+  float* Buffer;
+
+  template <typename Array>
+  void operator()(Array* array) const
+  {
+    const auto values = vtk::DataArrayTupleRange(array);
+    const int nx = this->Rows[1] - this->Rows[0] + 1;
+    const int z = this->Image->GetExtent()[4];
+    vtkSMPTools::For(0, this->Rows[3] - this->Rows[2] + 1,
+      [&](vtkIdType first, vtkIdType last)
+      {
+        for (vtkIdType r = first; r < last; ++r)
+        {
+          int ijk[3] = { this->Rows[0], this->Rows[3] - static_cast<int>(r), z };
+          const vtkIdType start = this->Image->ComputePointId(ijk);
+          for (vtkIdType i = 0; i < nx; ++i)
+          {
+            this->Buffer[r * nx + i] = static_cast<float>(values[start + i][this->Component]);
+          }
+        }
+      });
+  }
+};
+
+// Component `c` of `array` over `rows` into `buffer`, NaN where `mask` (optional) is 0.
+void Copy(vtkImageData* image, vtkDataArray* array, int c, vtkDataArray* mask, const int rows[6],
+  float* buffer)
+{
+  const CopyRows copy{ image, rows, c, buffer };
+  if (!vtkArrayDispatch::Dispatch::Execute(array, copy))
+  {
+    copy(array);
+  }
+  if (!mask)
+  {
+    return;
+  }
+  const vtkIdType count = static_cast<vtkIdType>(rows[1] - rows[0] + 1) * (rows[3] - rows[2] + 1);
+  std::vector<float> valid(count);
+  const CopyRows copyMask{ image, rows, 0, valid.data() };
+  if (!vtkArrayDispatch::Dispatch::Execute(mask, copyMask))
+  {
+    copyMask(mask);
+  }
+  for (vtkIdType k = 0; k < count; ++k)
+  {
+    buffer[k] = valid[k] != 0.0f ? buffer[k] : std::numeric_limits<float>::quiet_NaN();
+  }
+}
+}
+
 //------------------------------------------------------------------------------
-// One tile's rows of every band, top row first, NaN where the mask says no-data.
+// One tile, a block row at a time: its rows of every band, top row first, NaN where the mask
+// says no-data, then out of GDAL's block cache. Whatever the tile, the writer holds a few block
+// rows (a tile that is the whole grid would otherwise hold it a second time, in GDAL's cache).
 bool vtkGDALGridWriter::WriteTile(vtkFile& file, vtkImageData* image, const int tile[6],
   const int whole[6], const std::vector<std::string>& arrays, std::vector<float>& buffer)
 {
-  const int nx = tile[1] - tile[0] + 1, rows = tile[3] - tile[2] + 1;
-  try
-  {
-    buffer.resize(static_cast<size_t>(nx) * rows);
-  }
-  catch (const std::bad_alloc&)
-  {
-    vtkErrorMacro("Cannot allocate a tile of " << nx << " x " << rows << " texels; set TileRows.");
-    return false;
-  }
-  vtkDataArray* mask = image->GetPointData()->GetArray(vtkApertureValidMask::Name());
-  int band = 0;
+  std::vector<vtkDataArray*> found;
   for (const auto& name : arrays)
   {
-    vtkDataArray* array = image->GetPointData()->GetArray(name.c_str());
-    if (!array)
+    found.push_back(image->GetPointData()->GetArray(name.c_str()));
+    if (!found.back())
     {
       vtkErrorMacro(
         "A tile has no point array " << vtkApertureText::Quote(name) << "; nothing written.");
       return false;
     }
-    for (int c = 0; c < array->GetNumberOfComponents(); ++c, ++band)
+  }
+  vtkDataArray* mask = image->GetPointData()->GetArray(vtkApertureValidMask::Name());
+  const int nx = tile[1] - tile[0] + 1;
+  buffer.resize(static_cast<size_t>(nx) * BlockRows);
+  std::string error;
+  for (int top = tile[3]; top >= tile[2]; top -= BlockRows)
+  {
+    const int rows[6] = { tile[0], tile[1], std::max(tile[2], top - BlockRows + 1), top, tile[4],
+      tile[5] };
+    int band = 0;
+    for (vtkDataArray* array : found)
     {
-      vtkSMPTools::For(0, rows,
-        [&](vtkIdType first, vtkIdType last)
-        {
-          for (vtkIdType r = first; r < last; ++r)
-          {
-            int ijk[3] = { tile[0], tile[3] - static_cast<int>(r), tile[4] };
-            const vtkIdType start = image->ComputePointId(ijk);
-            for (vtkIdType i = 0; i < nx; ++i)
-            {
-              const bool valid = !mask || mask->GetComponent(start + i, 0) != 0.0;
-              buffer[r * nx + i] = valid ? static_cast<float>(array->GetComponent(start + i, c))
-                                         : std::numeric_limits<float>::quiet_NaN();
-            }
-          }
-        });
-      std::string error;
-      if (!file.WriteBand(
-            band, tile[0] - whole[0], whole[3] - tile[3], nx, rows, buffer.data(), error))
+      for (int c = 0; c < array->GetNumberOfComponents(); ++c, ++band)
       {
-        vtkErrorMacro(<< error);
-        return false;
+        Copy(image, array, c, mask, rows, buffer.data());
+        if (!file.WriteBand(band, tile[0] - whole[0], whole[3] - top, nx, top - rows[2] + 1,
+              buffer.data(), error))
+        {
+          vtkErrorMacro(<< error);
+          return false;
+        }
       }
+    }
+    if (!file.Flush(false, error))
+    {
+      vtkErrorMacro(<< error);
+      return false;
     }
   }
   return true;

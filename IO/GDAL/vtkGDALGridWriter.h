@@ -28,10 +28,11 @@
  * texels at a time (its update extent), writes it and lets it go, so that only one tile (and
  * what the pipeline keeps for it) is in memory, whatever the size of the grid;
  * vtkAperturePrecompute then computes each tile from the tile grown by its MaximumDistance.
- * 0 rows or columns: the whole extent's. Each tile's blocks are flushed out of GDAL's block
- * cache once written; multiples of 256 (the file's blocks) are written without reading back. The
- * file is a tiled, BigTIFF-when- needed GeoTIFF; with Compress on, DEFLATE with the floating-point
- * predictor.
+ * 0 rows or columns: the whole extent's. Each tile goes to GDAL 256 rows (a row of the file's
+ * blocks) at a time, flushed out of GDAL's block cache once written, so that the writer itself
+ * holds a few block rows even when the tile is the whole grid; tiles of multiples of 256 rows are
+ * written without reading back. Arrays are read in their own type. The file is a tiled,
+ * BigTIFF-when-needed GeoTIFF; with Compress on, DEFLATE with the floating-point predictor.
  *
  * An input that is not a 2D image, a missing array, a file that cannot be created, or an upstream
  * failure is an error, and no partial file is left behind.

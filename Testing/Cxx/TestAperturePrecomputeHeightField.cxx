@@ -19,13 +19,16 @@
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkExtractVOI.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkShortArray.h"
 #include "vtkTestUtilities.h"
 
 #include <algorithm>
@@ -249,6 +252,54 @@ void TestHorizonsMatchRays(const char* file)
   horizons->Update();
   Check(!horizons->GetUsedHorizons(), "with an occluder the filter casts rays", 1, 0);
 }
+
+// The sweeps read float heights in place and other types (here rounded to whole metres, as
+// doubles and as shorts, and scaled by 2 instead of stored doubled) through copies: every path
+// gives the same apertures, value for value, and the input is left as it was.
+void TestHeightTypes(const char* file)
+{
+  auto image = Fuji(file, 4);
+  vtkDataArray* source = image->GetPointData()->GetScalars();
+  const vtkIdType n = source->GetNumberOfTuples();
+  vtkNew<vtkFloatArray> floats;
+  vtkNew<vtkDoubleArray> doubles;
+  vtkNew<vtkShortArray> shorts;
+  vtkNew<vtkFloatArray> doubled;
+  for (vtkIdType t = 0; t < n; ++t)
+  {
+    const double metres = std::round(source->GetComponent(t, 0));
+    floats->InsertNextValue(static_cast<float>(metres));
+    doubles->InsertNextValue(metres);
+    shorts->InsertNextValue(static_cast<short>(metres / 2.0));
+    doubled->InsertNextValue(static_cast<float>(2.0 * std::floor(metres / 2.0)));
+  }
+  auto radii = [&](vtkDataArray* heights, double scale)
+  {
+    auto grid = vtkSmartPointer<vtkImageData>::New();
+    grid->CopyStructure(image);
+    grid->GetPointData()->SetScalars(heights);
+    vtkNew<vtkAperturePrecompute> filter;
+    filter->SetInputData(grid);
+    filter->SetHeightScale(scale);
+    filter->Update();
+    return vtkSmartPointer<vtkDataArray>(
+      filter->GetImageDataOutput()->GetPointData()->GetArray("ApertureRadius"));
+  };
+  const vtkSmartPointer<vtkDataArray> inPlace = radii(floats, 1.0);
+  const vtkSmartPointer<vtkDataArray> fromDoubles = radii(doubles, 1.0);
+  const vtkSmartPointer<vtkDataArray> fromShorts = radii(shorts, 2.0);
+  const vtkSmartPointer<vtkDataArray> fromDoubled = radii(doubled, 1.0);
+  int different = 0, unscaled = 0;
+  for (vtkIdType t = 0; t < n; ++t)
+  {
+    different += inPlace->GetComponent(t, 0) != fromDoubles->GetComponent(t, 0);
+    unscaled += fromShorts->GetComponent(t, 0) != fromDoubled->GetComponent(t, 0);
+  }
+  Check(different == 0, "float heights in place == double heights copied", different, 0);
+  Check(unscaled == 0, "short heights scaled by 2 == float heights stored doubled", unscaled, 0);
+  Check(floats->GetValue(n / 2) == static_cast<float>(std::round(source->GetComponent(n / 2, 0))),
+    "the input heights are left as they were");
+}
 }
 
 int TestAperturePrecomputeHeightField(int argc, char* argv[])
@@ -257,6 +308,7 @@ int TestAperturePrecomputeHeightField(int argc, char* argv[])
   TestTexelsMatchVertices(file);
   TestConvergence(file);
   TestHorizonsMatchRays(file);
+  TestHeightTypes(file);
   delete[] file;
   return vtkApertureTest::Result();
 }

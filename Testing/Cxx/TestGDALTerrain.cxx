@@ -23,6 +23,7 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
@@ -30,9 +31,11 @@
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkShortArray.h"
 #include "vtkStringArray.h"
 #include "vtkTestErrorObserver.h"
 #include "vtkTestUtilities.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <cpl_string.h>
 #include <gdal.h>
@@ -548,6 +551,52 @@ void TestDegenerate()
 }
 }
 
+// The writer sends a tile to GDAL a block row (256 rows) at a time: an untiled image of 600
+// rows, with arrays of other types than float (short heights, a double vector) and a mask,
+// reads back value for value, NaN exactly where the mask is 0, its rows in the right places.
+void TestWriterBlockRows()
+{
+  const int nx = 37, ny = 600;
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(nx, ny, 1);
+  vtkNew<vtkShortArray> heights;
+  heights->SetName("Heights");
+  vtkNew<vtkDoubleArray> vectors;
+  vectors->SetName("Vectors");
+  vectors->SetNumberOfComponents(2);
+  vtkNew<vtkUnsignedCharArray> mask;
+  mask->SetName("vtkValidPointMask");
+  for (vtkIdType t = 0; t < nx * ny; ++t)
+  {
+    heights->InsertNextValue(static_cast<short>(t % 30011 - 15000));
+    vectors->InsertNextTuple2(0.25 * t, -1.0 / (t + 1));
+    mask->InsertNextValue(t % 7 == 3 ? 0 : 1);
+  }
+  image->GetPointData()->AddArray(heights);
+  image->GetPointData()->AddArray(vectors);
+  image->GetPointData()->AddArray(mask);
+  vtkNew<vtkGDALGridWriter> writer;
+  writer->SetInputData(image);
+  writer->AddArrayName("Heights");
+  writer->AddArrayName("Vectors");
+  const std::string out = Directory + "/block-rows.tif";
+  writer->SetFileName(out.c_str());
+  Check(writer->Write() == 1, "block rows: written");
+  int wrong = 0;
+  for (int b = 0; b < 3; ++b)
+  {
+    const auto values = ReadBand(out, b + 1, nx, ny);
+    for (vtkIdType t = 0; t < nx * ny; ++t)
+    {
+      const double want = b == 0 ? heights->GetValue(t) : vectors->GetComponent(t, b - 1);
+      const bool masked = mask->GetValue(t) == 0;
+      wrong += values.size() != size_t(nx * ny) ||
+        (masked ? !std::isnan(values[t]) : values[t] != static_cast<float>(want));
+    }
+  }
+  Check(wrong == 0, "block rows: 600 rows of short and double arrays read back exactly", wrong, 0);
+}
+
 int TestGDALTerrain(int argc, char* argv[])
 {
   char* temporary =
@@ -562,6 +611,7 @@ int TestGDALTerrain(int argc, char* argv[])
   TestLambertOnGrads();
   TestBadFiles();
   TestTiledRoundTrip();
+  TestWriterBlockRows();
   TestDegenerate();
   return vtkApertureTest::Result();
 }
