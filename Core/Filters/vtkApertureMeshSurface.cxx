@@ -195,19 +195,12 @@ void Build::Triangulate()
   std::vector<vtkIdType> local;
   vtkIdType cell = 0;
   this->Polygons = this->Input->GetNumberOfPolys();
-  for (vtkCellArray* cells : { this->Input->GetPolys(), this->Input->GetStrips() })
-  {
-    const bool strip = cells == this->Input->GetStrips();
-    vtkIdType npts;
-    const vtkIdType* ids;
-    auto it = vtk::TakeSmartPointer(cells->NewIterator());
-    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cell)
+  vtkApertureMeshSurface::ForEachPolygonOrStrip(this->Input,
+    [&](vtkIdType npts, const vtkIdType* ids, bool strip)
     {
-      it->GetCurrentCell(npts, ids);
-      this->AddCellTriangles(npts, ids, strip, local, cell);
+      this->AddCellTriangles(npts, ids, strip, local, cell++);
       this->Corners += npts;
-    }
-  }
+    });
 }
 
 //------------------------------------------------------------------------------

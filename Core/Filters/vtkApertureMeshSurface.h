@@ -24,6 +24,9 @@
 #define vtkApertureMeshSurface_h
 
 #include "vtkApertureLightingCoreModule.h" // For export macro
+#include "vtkCellArray.h"                  // For ForEachPolygonOrStrip()
+#include "vtkCellArrayIterator.h"          // For ForEachPolygonOrStrip()
+#include "vtkPolyData.h"                   // For ForEachPolygonOrStrip()
 #include "vtkType.h"
 
 #include <string>
@@ -31,7 +34,6 @@
 
 class vtkApertureSurface;
 class vtkPoints;
-class vtkPolyData;
 
 class VTKAPERTURELIGHTINGCORE_EXPORT vtkApertureMeshSurface
 {
@@ -46,6 +48,26 @@ public:
    */
   static bool Set(vtkApertureSurface& surface, vtkPolyData* input, const double origin[3],
     double featureAngle, std::string& error);
+
+  /**
+   * Calls `visit(npts, ids, strip)` for each polygon of `input`, then each strip, in cell order.
+   */
+  template <typename Visit>
+  static void ForEachPolygonOrStrip(vtkPolyData* input, Visit&& visit)
+  {
+    for (vtkCellArray* cells : { input->GetPolys(), input->GetStrips() })
+    {
+      const bool strip = cells == input->GetStrips();
+      vtkIdType npts;
+      const vtkIdType* ids;
+      auto it = vtk::TakeSmartPointer(cells->NewIterator());
+      for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+      {
+        it->GetCurrentCell(npts, ids);
+        visit(npts, ids, strip);
+      }
+    }
+  }
 
   /**
    * How a polygon or strip becomes triangles, for every caster and for refinement: appends to

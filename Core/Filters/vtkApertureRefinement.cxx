@@ -64,15 +64,9 @@ public:
   {
     std::vector<vtkIdType> local;
     vtkIdType cell = this->Input->GetNumberOfVerts() + this->Input->GetNumberOfLines();
-    for (vtkCellArray* cells : { this->Input->GetPolys(), this->Input->GetStrips() })
-    {
-      const bool strip = cells == this->Input->GetStrips();
-      vtkIdType npts;
-      const vtkIdType* ids;
-      auto it = vtk::TakeSmartPointer(cells->NewIterator());
-      for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cell)
+    vtkApertureMeshSurface::ForEachPolygonOrStrip(this->Input,
+      [&](vtkIdType npts, const vtkIdType* ids, bool strip)
       {
-        it->GetCurrentCell(npts, ids);
         local.clear();
         vtkApertureMeshSurface::Triangulate(
           npts, ids, strip, this->Input->GetPoints(), this->Finite.data(), local);
@@ -80,9 +74,8 @@ public:
         {
           this->Triangles.push_back(ids[k]);
         }
-        this->Cells.insert(this->Cells.end(), local.size() / 3, cell);
-      }
-    }
+        this->Cells.insert(this->Cells.end(), local.size() / 3, cell++);
+      });
   }
 
   // One pass: every edge longer than the maximum split at its midpoint. False when nothing was.
@@ -314,15 +307,9 @@ double vtkApertureRefinement::LongestEdge(vtkPolyData* input)
 {
   double longest2 = 0.0;
   std::vector<vtkIdType> local;
-  for (vtkCellArray* cells : { input->GetPolys(), input->GetStrips() })
-  {
-    const bool strip = cells == input->GetStrips();
-    vtkIdType npts;
-    const vtkIdType* ids;
-    auto it = vtk::TakeSmartPointer(cells->NewIterator());
-    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  vtkApertureMeshSurface::ForEachPolygonOrStrip(input,
+    [&](vtkIdType npts, const vtkIdType* ids, bool strip)
     {
-      it->GetCurrentCell(npts, ids);
       local.clear();
       // Fans are enough to measure edges, and need no finite points.
       vtkApertureMeshSurface::Triangulate(npts, ids, strip, nullptr, nullptr, local);
@@ -334,7 +321,6 @@ double vtkApertureRefinement::LongestEdge(vtkPolyData* input)
         const double d2 = vtkMath::Distance2BetweenPoints(a, b);
         longest2 = std::isfinite(d2) ? std::max(longest2, d2) : longest2;
       }
-    }
-  }
+    });
   return std::sqrt(longest2);
 }

@@ -39,12 +39,8 @@ Faces FacesOf(vtkPolyData* mesh)
   vtkApertureSurface::InitializeBounds(faces.Bounds);
   vtkApertureSurface::ExpandBounds(mesh, faces.Bounds);
   std::vector<vtkIdType> local;
-  for (vtkCellArray* cells : { mesh->GetPolys(), mesh->GetStrips() })
-  {
-    const bool strip = cells == mesh->GetStrips();
-    vtkIdType npts;
-    const vtkIdType* ids;
-    for (cells->InitTraversal(); cells->GetNextCell(npts, ids);)
+  vtkApertureMeshSurface::ForEachPolygonOrStrip(mesh,
+    [&](vtkIdType npts, const vtkIdType* ids, bool strip)
     {
       local.clear();
       vtkApertureMeshSurface::Triangulate(npts, ids, strip, nullptr, nullptr, local);
@@ -68,8 +64,7 @@ Faces FacesOf(vtkPolyData* mesh)
           (p[0][1] + p[1][1] + p[2][1]) / 3.0, (p[0][2] + p[1][2] + p[2][2]) / 3.0 });
         faces.Area += area;
       }
-    }
-  }
+    });
   return faces;
 }
 
