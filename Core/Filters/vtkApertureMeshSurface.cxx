@@ -70,10 +70,9 @@ struct Build
   vtkApertureSurface& S;
   vtkPolyData* Input;
   vtkIdType N;
-  std::vector<double> World;         // input points, 3 each
-  std::vector<unsigned char> Finite; // per input point
-  std::vector<std::uint32_t>
-    VertexOf; // per input point (vtkApertureSurface::NoVertex when not finite)
+  std::vector<double> World;            // input points, 3 each
+  std::vector<unsigned char> Finite;    // per input point
+  std::vector<std::uint32_t> VertexOf;  // per input point (NoVertex when not finite)
   std::vector<vtkIdType> VertexInput;   // an input point of each vertex
   std::vector<unsigned char> OnSurface; // input point used by a polygon or strip
   // 32-bit where the size limits of Set() allow: the triangles dominate the memory.

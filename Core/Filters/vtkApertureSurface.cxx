@@ -26,6 +26,10 @@
 #include <cmath>
 #include <cstring>
 
+// Defined here too: C++14 (Clang's default) needs a definition for the references that
+// std::vector's assign() and friends bind to it.
+constexpr std::uint32_t vtkApertureSurface::NoVertex;
+
 //------------------------------------------------------------------------------
 bool vtkApertureSurface::IsFinite(const double p[3])
 {

@@ -78,6 +78,12 @@ void vtkLightSphereVisibility::AddOccluderConnection(vtkAlgorithmOutput* occlude
 }
 
 //------------------------------------------------------------------------------
+void vtkLightSphereVisibility::RemoveAllOccluders()
+{
+  this->SetInputConnection(1, nullptr);
+}
+
+//------------------------------------------------------------------------------
 int vtkLightSphereVisibility::FillInputPortInformation(int port, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");

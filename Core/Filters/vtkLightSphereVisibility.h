@@ -104,10 +104,13 @@ public:
   vtkBooleanMacro(ComputeVisibilityBits, bool);
   ///@}
 
+  ///@{
   /**
-   * Adds an occluder on port 1: it casts shadows but gets no visibility.
+   * Occluders on port 1: they cast shadows but get no visibility.
    */
   void AddOccluderConnection(vtkAlgorithmOutput* occluder);
+  void RemoveAllOccluders();
+  ///@}
 
   /**
    * Points given new directions in the last update (all of them, when anything was computed).

@@ -78,6 +78,17 @@ def main(plugin, data, work):
     check(environment is not None and environment.GetXMLName() == "OpenEXRReader",
           "File > Open picks the OpenEXR reader for .exr")
     visibility = pvs.OcclusionQueryVisibility(Input=bunny, Backend="Ray cast", Level=1)
+    # Light Sphere Visibility, the core's filter: the same matrix as the ray-cast backend.
+    core = pvs.LightSphereVisibility(Input=bunny, Level=1)
+    by_rays, by_core = point_array(visibility, "Visibility"), point_array(core, "Visibility")
+    check(by_rays is not None and by_core is not None and by_core.shape == by_rays.shape
+          and np.array_equal(by_core, by_rays) and (by_core > 0).any(),
+          "Light Sphere Visibility == Occlusion Query Visibility's ray cast, value for value")
+    # Occluders changed in the GUI clear the old ones first (RemoveAllOccluders).
+    core.Occluders = [bunny]
+    core.Occluders = []
+    check(np.array_equal(point_array(core, "Visibility"), by_core),
+          "Light Sphere Visibility: occluders added and removed again change nothing")
     lit = pvs.EnvironmentVisibilityLighting(Input=visibility, Environment=environment, UpAxis="Y")
     irradiance = point_array(lit, "EnvironmentLighting")
     check(irradiance is not None and irradiance.shape[1] == 3 and np.isfinite(irradiance).all()
