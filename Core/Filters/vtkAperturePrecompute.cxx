@@ -393,6 +393,13 @@ bool vtkAperturePrecompute::vtkRun::ChooseMethod()
     return false;
   }
   this->Horizons = possible && this->Self->Method != RAYS;
+  if (this->Self->ComputeHorizonAngles && !this->Horizons)
+  {
+    vtkWarningWithObjectMacro(this->Self,
+      "Horizon angles come from horizon sweeps of a height field; this update casts rays, so "
+      "there is no "
+        << vtkApertureText::Quote(this->Self->HorizonAnglesArrayName) << " array.");
+  }
   return true;
 }
 
@@ -410,6 +417,8 @@ bool vtkAperturePrecompute::vtkRun::SweepHorizons(const int extent[6])
   settings.Sectors = self->NumberOfSectors;
   settings.MaximumDistance = self->SearchDistance();
   settings.AmbientOcclusion = self->ComputeAmbientOcclusion;
+  settings.Horizons = self->ComputeHorizonAngles;
+  settings.HorizonName = self->HorizonAnglesArrayName.c_str();
   settings.BentNormalName = self->BentNormalArrayName.c_str();
   settings.RadiusName = self->ApertureRadiusArrayName.c_str();
   settings.OcclusionName = self->AmbientOcclusionArrayName.c_str();
@@ -820,11 +829,13 @@ void vtkAperturePrecompute::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Sampling: " << (this->Sampling == RANDOM ? "Random" : "Stratified") << "\n";
   os << indent << "HeightScale: " << this->HeightScale << "\n";
   os << indent << "ComputeAmbientOcclusion: " << this->ComputeAmbientOcclusion << "\n";
+  os << indent << "ComputeHorizonAngles: " << this->ComputeHorizonAngles << "\n";
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
   os << indent << "MaximumEdgeLength: " << this->MaximumEdgeLength << "\n";
   os << indent << "BentNormalArrayName: " << this->BentNormalArrayName << "\n";
   os << indent << "ApertureRadiusArrayName: " << this->ApertureRadiusArrayName << "\n";
   os << indent << "AmbientOcclusionArrayName: " << this->AmbientOcclusionArrayName << "\n";
+  os << indent << "HorizonAnglesArrayName: " << this->HorizonAnglesArrayName << "\n";
   os << indent << "AccelerationStructure: " << structures[this->AccelerationStructure] << "\n";
   static const char* const methods[] = { "HorizonsForHeightFields", "Rays", "Horizons" };
   os << indent << "Method: " << methods[this->Method] << "\n";

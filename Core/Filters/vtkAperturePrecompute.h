@@ -182,7 +182,24 @@ public:
 
   ///@{
   /**
-   * Names of the output arrays. Defaults: "BentNormal", "ApertureRadius", "AmbientOcclusion".
+   * Also keep the horizon of every sector (height fields swept for horizons only; with rays the
+   * filter warns and writes none). Default off. `HorizonAngles` (float, NumberOfSectors
+   * components) holds per texel h_k, radians above the horizontal plane in [−π/2, π/2]: the
+   * elevation of the highest sample within MaximumDistance along the middle of sector k, which
+   * covers the azimuths [2πk/S, 2π(k+1)/S) counted from the grid's i axis toward its j axis
+   * (counter-clockwise from east on a north-up DEM), in the grid's own frame; −π/2 where nothing
+   * is in range, π/2 (closed) at no-data texels. vtkHorizonLighting shades from them (the
+   * mappers' Horizon mode); they cost 4 bytes per sector and texel.
+   */
+  vtkSetMacro(ComputeHorizonAngles, bool);
+  vtkGetMacro(ComputeHorizonAngles, bool);
+  vtkBooleanMacro(ComputeHorizonAngles, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Names of the output arrays. Defaults: "BentNormal", "ApertureRadius", "AmbientOcclusion",
+   * "HorizonAngles".
    */
   vtkSetStdStringFromCharMacro(BentNormalArrayName);
   vtkGetCharFromStdStringMacro(BentNormalArrayName);
@@ -190,6 +207,8 @@ public:
   vtkGetCharFromStdStringMacro(ApertureRadiusArrayName);
   vtkSetStdStringFromCharMacro(AmbientOcclusionArrayName);
   vtkGetCharFromStdStringMacro(AmbientOcclusionArrayName);
+  vtkSetStdStringFromCharMacro(HorizonAnglesArrayName);
+  vtkGetCharFromStdStringMacro(HorizonAnglesArrayName);
   ///@}
 
   ///@{
@@ -320,6 +339,7 @@ protected:
   int Sampling = STRATIFIED;
   double HeightScale = 1.0;
   bool ComputeAmbientOcclusion = false;
+  bool ComputeHorizonAngles = false;
   double FeatureAngle = 60.0;
   double MaximumEdgeLength = 0.0;
   int AccelerationStructure = AUTOMATIC;
@@ -331,6 +351,7 @@ protected:
   std::string BentNormalArrayName = "BentNormal";
   std::string ApertureRadiusArrayName = "ApertureRadius";
   std::string AmbientOcclusionArrayName = "AmbientOcclusion";
+  std::string HorizonAnglesArrayName = "HorizonAngles";
   std::string EmbreeConfiguration;
 
 private:

@@ -214,6 +214,7 @@ struct Sector
 struct Lines
 {
   Sector Sectors[2];
+  int Index[2]; // the sectors' numbers
   int Count;
   int Major; // 0: i, 1: j
   vtkIdType NMajor, NMinor, MajorStride, MinorStride;
@@ -243,6 +244,8 @@ Lines::Lines(const Field& f, const vtkHorizonApertures::Grid& grid, int sector, 
   const int half = grid.Sectors % 2 == 0 ? grid.Sectors / 2 : grid.Sectors;
   this->Count = paired ? 2 : 1;
   this->Sectors[0] = Sector(sector, grid.Sectors);
+  this->Index[0] = sector;
+  this->Index[1] = sector + half;
   if (paired)
   {
     this->Sectors[1] = Sector(sector + half, grid.Sectors);
@@ -686,9 +689,10 @@ void SweepSector(const Field& f, const Lines& lines, const float* normals, const
 class Accumulator
 {
 public:
-  Accumulator(const Lines& lines, const vtkHorizonApertures::Buffers& out)
+  Accumulator(const Lines& lines, const vtkHorizonApertures::Buffers& out, int sectors)
     : L(lines)
     , Out(out)
+    , NumberOfSectors(sectors)
   {
   }
 
@@ -704,6 +708,11 @@ public:
       const double top = std::max(slopes[k], tangent);
       const double cosA = 1.0 / std::sqrt(1.0 + top * top);
       Deficit(sector.Dphi, sector.Chord, FastAtan(top), top * cosA, cosA, deficit);
+      if (this->Out.Horizons)
+      {
+        this->Out.Horizons[o * this->NumberOfSectors + this->L.Index[k]] =
+          static_cast<float>(FastAtan(slopes[k]));
+      }
     }
     this->Out.ApertureRadius[o] += static_cast<float>(deficit[0]);
     for (int c = 0; c < 3; ++c)
@@ -715,10 +724,12 @@ public:
 private:
   const Lines& L;
   const vtkHorizonApertures::Buffers& Out;
+  const vtkIdType NumberOfSectors;
 };
 
-// The open hemisphere less the deficits: radius, bent normal, ambient occlusion.
-void Finish(const vtkHorizonApertures::Buffers& out, vtkIdType texels)
+// The open hemisphere less the deficits: radius, bent normal, ambient occlusion; no-data texels
+// closed.
+void Finish(const vtkHorizonApertures::Buffers& out, vtkIdType texels, int sectors)
 {
   vtkSMPTools::For(0, texels,
     [&](vtkIdType first, vtkIdType last)
@@ -735,6 +746,10 @@ void Finish(const vtkHorizonApertures::Buffers& out, vtkIdType texels)
             out.AmbientOcclusion[o] = 0.0f;
           }
           std::copy(n, n + 3, bent);
+          if (out.Horizons)
+          {
+            std::fill_n(out.Horizons + o * sectors, sectors, static_cast<float>(0.5 * Pi));
+          }
           continue;
         }
         const double solid = 2.0 * Pi - out.ApertureRadius[o];
@@ -789,14 +804,14 @@ bool vtkHorizonApertures::Compute(const Grid& grid, const Buffers& output, std::
   for (int pass = 0; pass < passes; ++pass)
   {
     const Lines lines(f, grid, pass, paired);
-    SweepSector(f, lines, output.Normals, Accumulator(lines, output));
+    SweepSector(f, lines, output.Normals, Accumulator(lines, output, grid.Sectors));
     if (progress && !progress(double(pass + 1) / passes))
     {
       error = "The computation was aborted.";
       return false;
     }
   }
-  Finish(output, texels);
+  Finish(output, texels, grid.Sectors);
   return true;
 }
 

@@ -106,7 +106,8 @@ public:
     vtkIdType Origin[2] = { 0, 0 };
   };
 
-  /// The caller's arrays for the output extent (i fastest): 3, 1, 1, 3 and 1 values per texel.
+  /// The caller's arrays for the output extent (i fastest): 3, 1, 1, 3, 1 and Sectors values
+  /// per texel.
   struct Buffers
   {
     float* BentNormals;      ///< unit; the normal where not valid
@@ -114,6 +115,9 @@ public:
     float* AmbientOcclusion; ///< 1 on an open plane; 0 where not valid; may be null
     float* Normals;          ///< (0, 0, 1) where not valid
     unsigned char* Valid;    ///< 0 for no-data texels
+    /// The horizon h of each sector (sector k at k + Sectors × texel), radians; π/2 (closed)
+    /// where not valid; may be null.
+    float* Horizons = nullptr;
   };
 
   /// Per texel of the output extent, i fastest, in arrays of its own.

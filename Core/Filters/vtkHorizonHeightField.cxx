@@ -228,7 +228,7 @@ bool MakeGrid(vtkImageData* image, vtkDataArray* heights, const int extent[6], c
 // The output arrays of Compute(), allocated, filled through Buffers() and added to the output.
 struct Results
 {
-  vtkSmartPointer<vtkFloatArray> Bent, Radius, Normals, Occlusion;
+  vtkSmartPointer<vtkFloatArray> Bent, Radius, Normals, Occlusion, Horizons;
   vtkNew<vtkUnsignedCharArray> Mask;
 
   bool Allocate(const vtkHorizonHeightField::Settings& settings, vtkIdType texels)
@@ -238,9 +238,12 @@ struct Results
     this->Normals = NewArray("Normals", 3, texels);
     this->Occlusion =
       settings.AmbientOcclusion ? NewArray(settings.OcclusionName, 1, texels) : nullptr;
+    this->Horizons =
+      settings.Horizons ? NewArray(settings.HorizonName, settings.Sectors, texels) : nullptr;
     this->Mask->SetName(vtkApertureValidMask::Name());
     if (!this->Bent || !this->Radius || !this->Normals ||
-      (settings.AmbientOcclusion && !this->Occlusion) || !this->Mask->Allocate(texels))
+      (settings.AmbientOcclusion && !this->Occlusion) || (settings.Horizons && !this->Horizons) ||
+      !this->Mask->Allocate(texels))
     {
       return false;
     }
@@ -252,7 +255,7 @@ struct Results
   {
     return { this->Bent->GetPointer(0), this->Radius->GetPointer(0),
       this->Occlusion ? this->Occlusion->GetPointer(0) : nullptr, this->Normals->GetPointer(0),
-      this->Mask->GetPointer(0) };
+      this->Mask->GetPointer(0), this->Horizons ? this->Horizons->GetPointer(0) : nullptr };
   }
 
   // Directions to world coordinates, arrays into `output`; returns the no-data texels.
@@ -266,6 +269,10 @@ struct Results
     if (this->Occlusion)
     {
       output->AddArray(this->Occlusion);
+    }
+    if (this->Horizons)
+    {
+      output->AddArray(this->Horizons);
     }
     if (!output->GetNormals())
     {

@@ -44,18 +44,20 @@ public:
     int Sectors = 32;
     double MaximumDistance = VTK_DOUBLE_MAX;
     bool AmbientOcclusion = false;
+    bool Horizons = false;
     const char* BentNormalName = "BentNormal";
     const char* RadiusName = "ApertureRadius";
     const char* OcclusionName = "AmbientOcclusion";
+    const char* HorizonName = "HorizonAngles";
   };
 
   /**
    * Computes the apertures of `extent` (within the image's extent, whose texels occlude) and adds
    * them to `output` (the point data of a grid of that extent): the bent normals, radii, ambient
-   * occlusion if asked, "Normals" (those of the triangulated surface, which the sweeps use)
-   * unless `output` has normals, and, where there is no-data, the valid mask. `progress` as for
-   * vtkHorizonApertures::Compute(). Returns the number of no-data texels in the extent, or -1 with
-   * one sentence in `error`.
+   * occlusion and horizons (in the grid's frame, Sectors components) if asked, "Normals" (those of
+   * the triangulated surface, which the sweeps use) unless `output` has normals, and, where there
+   * is no-data, the valid mask. `progress` as for vtkHorizonApertures::Compute(). Returns the
+   * number of no-data texels in the extent, or -1 with one sentence in `error`.
    */
   static vtkIdType Compute(vtkImageData* image, vtkDataArray* heights, const int extent[6],
     const Settings& settings, vtkPointData* output, std::string& error,

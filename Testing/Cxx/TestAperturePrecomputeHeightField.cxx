@@ -10,10 +10,12 @@
 =========================================================================*/
 // vtkAperturePrecompute's rays on the Mount Fuji DEM tile: the per-texel result equals the
 // per-vertex result on the same surface triangulated; the error against a 4096-ray run falls at
-// least as fast as 1/sqrt(N); stratified sampling beats random sampling at equal ray counts.
+// least as fast as 1/sqrt(N); stratified sampling beats random sampling at equal ray counts. The
+// horizons it keeps give back, through vtkHorizonLighting, the caps the sweep summed.
 
 #include "vtkAperturePrecompute.h"
 #include "vtkApertureTestHarness.h"
+#include "vtkHorizonLighting.h"
 #include "vtkSphericalCap.h"
 #include "vtkTerrainRGBReader.h"
 
@@ -253,6 +255,64 @@ void TestHorizonsMatchRays(const char* file)
   Check(!horizons->GetUsedHorizons(), "with an occluder the filter casts rays", 1, 0);
 }
 
+// The kept horizons are what the sweep summed: vtkHorizonLighting's sky through their wedges is
+// the sweep's ambient occlusion, and its open fraction the aperture's solid angle; keeping them
+// changes no other output.
+void TestKeptHorizons(const char* file)
+{
+  auto image = Fuji(file, 4);
+  vtkNew<vtkAperturePrecompute> plain, kept;
+  for (vtkAperturePrecompute* f : { plain.Get(), kept.Get() })
+  {
+    f->SetInputData(image);
+    f->SetNumberOfSectors(24);
+    f->SetMaximumDistance(3000.0);
+    f->ComputeAmbientOcclusionOn();
+  }
+  kept->ComputeHorizonAnglesOn();
+  plain->Update();
+  kept->Update();
+  vtkPointData* a = plain->GetImageDataOutput()->GetPointData();
+  vtkPointData* b = kept->GetImageDataOutput()->GetPointData();
+  vtkDataArray* horizons = b->GetArray("HorizonAngles");
+  Check(!a->GetArray("HorizonAngles") && horizons && horizons->GetNumberOfComponents() == 24,
+    "HorizonAngles only when asked, one component per sector");
+  if (!horizons)
+  {
+    return;
+  }
+  double worstSky = 0.0, worstOpen = 0.0;
+  int changed = 0;
+  for (vtkIdType t = 0; t < image->GetNumberOfPoints(); ++t)
+  {
+    double n[3];
+    b->GetNormals()->GetTuple(t, n);
+    const double sky = vtkHorizonLighting::SkyTransfer(horizons, t, n, true);
+    const double open = vtkHorizonLighting::SkyTransfer(horizons, t, n, false);
+    const double r = b->GetArray("ApertureRadius")->GetComponent(t, 0);
+    worstSky =
+      std::max(worstSky, std::abs(sky - b->GetArray("AmbientOcclusion")->GetComponent(t, 0)));
+    worstOpen = std::max(worstOpen, std::abs(open - (1.0 - std::cos(r))));
+    changed += r != a->GetArray("ApertureRadius")->GetComponent(t, 0);
+    for (int k = 0; k < 24; ++k)
+    {
+      const double h = horizons->GetComponent(t, k), pole = static_cast<float>(0.5 * vtkMath::Pi());
+      changed += !(h >= -pole && h <= pole);
+    }
+  }
+  std::cout << "Kept horizons vs the sweep's sums: AO " << worstSky << ", open fraction "
+            << worstOpen << " (max)\n";
+  Check(worstSky < 1e-4, "the sky through the kept horizons is the sweep's AO", worstSky, 1e-4);
+  Check(worstOpen < 1e-4, "their open fraction is the aperture's", worstOpen, 1e-4);
+  Check(changed == 0, "keeping horizons changes no radius and stays within +-pi/2", changed, 0);
+
+  kept->AddOccluderData(Triangulate(image));
+  kept->SetNumberOfRays(4);
+  kept->Update();
+  Check(!kept->GetImageDataOutput()->GetPointData()->GetArray("HorizonAngles"),
+    "rays keep no horizons");
+}
+
 // The sweeps read float heights in place and other types (here rounded to whole metres, as
 // doubles and as shorts, and scaled by 2 instead of stored doubled) through copies: every path
 // gives the same apertures, value for value, and the input is left as it was.
@@ -308,6 +368,7 @@ int TestAperturePrecomputeHeightField(int argc, char* argv[])
   TestTexelsMatchVertices(file);
   TestConvergence(file);
   TestHorizonsMatchRays(file);
+  TestKeptHorizons(file);
   TestHeightTypes(file);
   delete[] file;
   return vtkApertureTest::Result();

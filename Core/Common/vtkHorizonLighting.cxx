@@ -1,0 +1,261 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    vtkHorizonLighting.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkHorizonLighting.h"
+
+#include "vtkDataArray.h"
+#include "vtkMath.h"
+#include "vtkObjectFactory.h"
+#include "vtkSphericalCap.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+vtkStandardNewMacro(vtkHorizonLighting);
+
+namespace
+{
+constexpr double Pi = vtkMath::Pi();
+constexpr double HalfPi = 0.5 * vtkMath::Pi();
+
+// Unit copies of a direction; false for a zero-length or non-finite one.
+bool Unit(const double v[3], double u[3])
+{
+  const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  if (!(length > 0.0) || !std::isfinite(length))
+  {
+    return false;
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    u[k] = v[k] / length;
+  }
+  return true;
+}
+
+// The elevation of the tangent plane of normal n along azimuth (cos φ, sin φ); normals are taken
+// as facing up, as a height field's are.
+double TangentElevation(const double n[3], double c, double s)
+{
+  return std::atan(-(n[0] * c + n[1] * s) / std::max(n[2], 1e-4));
+}
+
+// What one azimuth of a light cap adds: the cap's elevations there [eLow, eHigh] above the
+// horizon h, in solid angle and in ∫ n·ω (above the tangent plane too), times the weight w.
+void AddMeridian(
+  const double n[3], double phi, double eLow, double eHigh, double h, double w, double sums[2])
+{
+  const double c = std::cos(phi), s = std::sin(phi);
+  const double seen = std::max(eLow, h);
+  if (eHigh > seen)
+  {
+    sums[0] += w * 2.0 * std::cos(0.5 * (eHigh + seen)) * std::sin(0.5 * (eHigh - seen));
+  }
+  const double lit = std::max(seen, TangentElevation(n, c, s));
+  if (eHigh > lit)
+  {
+    // ∫ cos²e de and ∫ sin e cos e de over [lit, eHigh], in forms that keep tiny intervals.
+    const double width = eHigh - lit, sinWidth = std::sin(width);
+    const double horizontal = 0.5 * width + 0.5 * std::cos(eHigh + lit) * sinWidth;
+    const double vertical = 0.5 * std::sin(eHigh + lit) * sinWidth;
+    sums[1] += w * ((n[0] * c + n[1] * s) * horizontal + n[2] * vertical);
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+int vtkHorizonLighting::EncodeAngle(double h)
+{
+  if (std::isnan(h))
+  {
+    return 255;
+  }
+  const double a = std::min(1.0, std::abs(h) / HalfPi);
+  const double t = std::copysign(std::sqrt(a), h);
+  return static_cast<int>(std::lround(127.5 * (t + 1.0)));
+}
+
+//------------------------------------------------------------------------------
+double vtkHorizonLighting::DecodeAngle(int code)
+{
+  const double t = std::min(std::max(code, 0), 255) / 127.5 - 1.0;
+  return HalfPi * t * std::abs(t);
+}
+
+//------------------------------------------------------------------------------
+double vtkHorizonLighting::HorizonAt(const float* horizons, int sectors, double azimuth)
+{
+  const double u = azimuth * sectors / (2.0 * Pi) - 0.5;
+  const double k = std::floor(u);
+  const double f = u - k;
+  const int k0 = static_cast<int>(k - sectors * std::floor(k / sectors));
+  const int k1 = k0 + 1 == sectors ? 0 : k0 + 1;
+  return horizons[k0] + f * (double(horizons[k1]) - horizons[k0]);
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+// A light cap (unit axis l, radius rl) above the horizons and the tangent plane of unit normal
+// n: its solid angle and ∫ n·ω dω, summed over azimuths.
+void LightSums(const double n[3], const float* horizons, int sectors, const double l[3], double rl,
+  double sums[2])
+{
+  const double beta = std::asin(std::min(1.0, std::max(-1.0, l[2])));
+  const double psi = std::atan2(l[1], l[0]);
+  const double sinR = std::sin(rl), halfSin = std::sin(0.5 * rl);
+  const double highest = *std::max_element(horizons, horizons + sectors);
+  if (beta - rl >= highest && vtkMath::Dot(n, l) >= sinR)
+  {
+    // Above every horizon and the tangent plane: the whole cap, in closed form.
+    sums[0] = 4.0 * Pi * halfSin * halfSin;
+    sums[1] = Pi * sinR * sinR * vtkMath::Dot(n, l);
+    return;
+  }
+  const bool polar = std::abs(beta) + rl >= HalfPi;
+  const int count =
+    polar ? vtkHorizonLighting::PolarLightSamples() : vtkHorizonLighting::LightSamples();
+  const double cosB = std::cos(beta), sinB = std::sin(beta);
+  const double span = polar ? Pi : std::asin(std::min(1.0, sinR / cosB));
+  for (int q = 0; q < count; ++q)
+  {
+    const double theta = Pi * (q + 0.5) / count;
+    // Evenly over all azimuths around a pole; else x = cos θ across the cap's span.
+    const double offset = polar ? 2.0 * theta - Pi : span * std::cos(theta);
+    const double weight = polar ? 2.0 * Pi / count : span * std::sin(theta) * Pi / count;
+    // The cap's elevations along this azimuth: |e − δ| <= γ, with cos γ = cos rl / R, and
+    // 1 − cos γ from half angles so that a sun-sized cap keeps its precision.
+    const double a = cosB * std::cos(offset), sinOffset = std::sin(offset);
+    const double r = std::sqrt(a * a + sinB * sinB);
+    const double lift = 2.0 * halfSin * halfSin - cosB * cosB * sinOffset * sinOffset / (1.0 + r);
+    if (!(lift > 0.0))
+    {
+      continue;
+    }
+    const double gamma = 2.0 * std::asin(std::min(1.0, std::sqrt(lift / (2.0 * r))));
+    const double delta = std::atan2(sinB, a);
+    const double phi = psi + offset;
+    AddMeridian(n, phi, std::max(delta - gamma, -HalfPi), std::min(delta + gamma, HalfPi),
+      vtkHorizonLighting::HorizonAt(horizons, sectors, phi), weight, sums);
+  }
+  sums[1] = std::max(0.0, sums[1]);
+}
+}
+
+//------------------------------------------------------------------------------
+double vtkHorizonLighting::LightTransfer(const double normal[3], const float* horizons, int sectors,
+  const double direction[3], double rl, double* coverage, double* cosineCoverage)
+{
+  double n[3], l[3];
+  double sums[2] = { 0.0, 0.0 }; // solid angle, ∫ n·ω dω
+  const bool usable = sectors >= 1 && !std::isnan(rl) && Unit(normal, n) && Unit(direction, l);
+  if (usable)
+  {
+    rl = vtkSphericalCap::ClampLightRadius(rl);
+    LightSums(n, horizons, sectors, l, rl, sums);
+  }
+  if (coverage)
+  {
+    *coverage = sums[0];
+  }
+  if (cosineCoverage)
+  {
+    *cosineCoverage = sums[1];
+  }
+  return usable ? sums[1] * vtkSphericalCap::LightRadiance(rl) : 0.0;
+}
+
+//------------------------------------------------------------------------------
+double vtkHorizonLighting::SkyTransfer(const double normal[3], const float* horizons, int sectors,
+  double coverage, double cosineCoverage, bool cosineWeighted)
+{
+  double n[3];
+  if (sectors < 1 || std::isnan(coverage) || std::isnan(cosineCoverage) || !Unit(normal, n))
+  {
+    return 0.0;
+  }
+  const double width = 2.0 * Pi / sectors;
+  double open = 0.0, openCosine = 0.0;
+  for (int k = 0; k < sectors; ++k)
+  {
+    const double phi0 = k * width, phi1 = phi0 + width, middle = phi0 + 0.5 * width;
+    const double h = std::min(HalfPi, std::max(-HalfPi, double(horizons[k])));
+    const double e = std::max(h, TangentElevation(n, std::cos(middle), std::sin(middle)));
+    const double sinE = std::sin(e), cosE = std::cos(e);
+    // Over elevations e … π/2: solid angle, ∫ cos²e de and ∫ sin e cos e de.
+    const double horizontal = 0.25 * Pi - 0.5 * (e + sinE * cosE);
+    open += width * (1.0 - sinE);
+    openCosine +=
+      (n[0] * (std::sin(phi1) - std::sin(phi0)) + n[1] * (std::cos(phi0) - std::cos(phi1))) *
+        horizontal +
+      n[2] * width * 0.5 * cosE * cosE;
+  }
+  return cosineWeighted ? std::max(0.0, openCosine - cosineCoverage) / Pi
+                        : std::max(0.0, open - coverage) / (2.0 * Pi);
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+// A point's horizons from an array, optionally as the GPU decodes them; empty when unusable.
+std::vector<float> PointHorizons(vtkDataArray* horizons, vtkIdType point, bool quantized)
+{
+  std::vector<float> h;
+  if (!horizons || point < 0 || point >= horizons->GetNumberOfTuples())
+  {
+    return h;
+  }
+  h.resize(horizons->GetNumberOfComponents());
+  for (size_t k = 0; k < h.size(); ++k)
+  {
+    const double value = horizons->GetComponent(point, static_cast<int>(k));
+    h[k] = static_cast<float>(
+      quantized ? vtkHorizonLighting::DecodeAngle(vtkHorizonLighting::EncodeAngle(value)) : value);
+  }
+  return h;
+}
+}
+
+//------------------------------------------------------------------------------
+double vtkHorizonLighting::LightTransfer(vtkDataArray* horizons, vtkIdType point, const double n[3],
+  const double l[3], double rl, bool quantized)
+{
+  const std::vector<float> h = PointHorizons(horizons, point, quantized);
+  return h.empty() ? 0.0 : LightTransfer(n, h.data(), static_cast<int>(h.size()), l, rl);
+}
+
+//------------------------------------------------------------------------------
+double vtkHorizonLighting::SkyTransfer(
+  vtkDataArray* horizons, vtkIdType point, const double n[3], bool cosineWeighted)
+{
+  const std::vector<float> h = PointHorizons(horizons, point, false);
+  return h.empty() ? 0.0
+                   : SkyTransfer(n, h.data(), static_cast<int>(h.size()), 0.0, 0.0, cosineWeighted);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkHorizonLighting::GetGLSLConstants()
+{
+  std::ostringstream glsl;
+  glsl << "// vtkHorizonLighting's constants (vtkHorizonLighting::GetGLSLConstants()).\n"
+       << "const int horizonLightingSamples = " << LightSamples() << ";\n"
+       << "const int horizonLightingPolarSamples = " << PolarLightSamples() << ";\n";
+  return glsl.str();
+}
+
+//------------------------------------------------------------------------------
+void vtkHorizonLighting::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "LightSamples: " << LightSamples() << "\n";
+  os << indent << "PolarLightSamples: " << PolarLightSamples() << "\n";
+}
