@@ -1,0 +1,155 @@
+// ApertureLighting: the GLSL twin of vtkHorizonLighting (see that class for the conventions and
+// the formulas). Needs vtkSphericalCapGLSL (for its pi and atan2), vtkHorizonLighting's
+// GetGLSLConstants(), and HORIZON_LIGHTING_SECTORS, the number of sectors of the arrays taken.
+
+// A horizon from its 8-bit code read as a normalised value v = code / 255:
+// t = 2v - 1, h = (pi/2) t |t|.
+float horizonLightingDecode(float v)
+{
+  float t = 2.0 * v - 1.0;
+  return 0.5 * sphericalCapPi * t * abs(t);
+}
+
+// The horizon at an azimuth, linear between sector middles, around the circle.
+float horizonLightingAt(float horizons[HORIZON_LIGHTING_SECTORS], float azimuth)
+{
+  float sectors = float(HORIZON_LIGHTING_SECTORS);
+  float u = azimuth * sectors / (2.0 * sphericalCapPi) - 0.5;
+  float k = floor(u);
+  float f = u - k;
+  int k0 = int(k - sectors * floor(k / sectors));
+  k0 = clamp(k0, 0, HORIZON_LIGHTING_SECTORS - 1);
+  int k1 = k0 + 1 == HORIZON_LIGHTING_SECTORS ? 0 : k0 + 1;
+  return horizons[k0] + f * (horizons[k1] - horizons[k0]);
+}
+
+// asin through sphericalCapAtan2, whose precision for small angles the built-in may lack.
+float horizonLightingAsin(float x)
+{
+  return sphericalCapAtan2(x, sqrt(max(0.0, 1.0 - x * x)));
+}
+
+// The tangent plane's elevation along azimuth (c, s) for a normal taken as facing up.
+float horizonLightingTangent(vec3 n, float c, float s)
+{
+  return sphericalCapAtan2(-(n.x * c + n.y * s), max(n.z, 1e-4));
+}
+
+// Adds one azimuth phi of a light cap, elevations [eLow, eHigh], above horizon h, weighted by w:
+// its solid angle (x) and its integral of n . w (y, above the tangent plane too).
+void horizonLightingAddMeridian(
+  vec3 n, float phi, float eLow, float eHigh, float h, float w, inout vec2 sums)
+{
+  float c = cos(phi);
+  float s = sin(phi);
+  float seen = max(eLow, h);
+  if (eHigh > seen)
+  {
+    sums.x += w * 2.0 * cos(0.5 * (eHigh + seen)) * sin(0.5 * (eHigh - seen));
+  }
+  float lit = max(seen, horizonLightingTangent(n, c, s));
+  if (eHigh > lit)
+  {
+    float width = eHigh - lit;
+    float sinWidth = sin(width);
+    float horizontal = 0.5 * width + 0.5 * cos(eHigh + lit) * sinWidth;
+    float vertical = 0.5 * sin(eHigh + lit) * sinWidth;
+    sums.y += w * ((n.x * c + n.y * s) * horizontal + n.z * vertical);
+  }
+}
+
+// A light cap (unit axis l, radius rl, clamped) above the horizons and the tangent plane of the
+// unit normal n: its solid angle (x) and its integral of n . w (y).
+vec2 horizonLightingLightSums(vec3 n, float horizons[HORIZON_LIGHTING_SECTORS], vec3 l, float rl)
+{
+  float beta = horizonLightingAsin(clamp(l.z, -1.0, 1.0));
+  float psi = sphericalCapAtan2(l.y, l.x);
+  float sinR = sin(rl);
+  float halfSin = sin(0.5 * rl);
+  float highest = horizons[0];
+  for (int k = 1; k < HORIZON_LIGHTING_SECTORS; ++k)
+  {
+    highest = max(highest, horizons[k]);
+  }
+  if (beta - rl >= highest && dot(n, l) >= sinR)
+  {
+    return vec2(4.0 * sphericalCapPi * halfSin * halfSin, sphericalCapPi * sinR * sinR * dot(n, l));
+  }
+  bool polar = abs(beta) + rl >= 0.5 * sphericalCapPi;
+  int count = polar ? horizonLightingPolarSamples : horizonLightingSamples;
+  float cosB = cos(beta);
+  float sinB = sin(beta);
+  float span = polar ? sphericalCapPi : horizonLightingAsin(min(1.0, sinR / cosB));
+  vec2 sums = vec2(0.0);
+  for (int q = 0; q < count; ++q)
+  {
+    float theta = sphericalCapPi * (float(q) + 0.5) / float(count);
+    float offset = polar ? 2.0 * theta - sphericalCapPi : span * cos(theta);
+    float weight =
+      polar ? 2.0 * sphericalCapPi / float(count) : span * sin(theta) * sphericalCapPi / float(count);
+    float a = cosB * cos(offset);
+    float sinOffset = sin(offset);
+    float r = sqrt(a * a + sinB * sinB);
+    float lift = 2.0 * halfSin * halfSin - cosB * cosB * sinOffset * sinOffset / (1.0 + r);
+    if (lift > 0.0)
+    {
+      float gamma = 2.0 * horizonLightingAsin(min(1.0, sqrt(lift / (2.0 * r))));
+      float delta = sphericalCapAtan2(sinB, a);
+      float phi = psi + offset;
+      horizonLightingAddMeridian(n, phi, max(delta - gamma, -0.5 * sphericalCapPi),
+        min(delta + gamma, 0.5 * sphericalCapPi), horizonLightingAt(horizons, phi), weight, sums);
+    }
+  }
+  return vec2(sums.x, max(0.0, sums.y));
+}
+
+// vtkHorizonLighting::LightTransfer(): the irradiance from a light of intensity 1, with the
+// light's solid angle above the horizons (coverage.x) and its integral of n . w (coverage.y).
+float horizonLightingLightTransfer(
+  vec3 n, float horizons[HORIZON_LIGHTING_SECTORS], vec3 l, float rl, out vec2 coverage)
+{
+  coverage = vec2(0.0);
+  float ln = length(n);
+  float ll = length(l);
+  if (any(isnan(n)) || any(isnan(l)) || isnan(rl) || !(ln > 0.0) || !(ll > 0.0) || isinf(ln) ||
+    isinf(ll))
+  {
+    return 0.0;
+  }
+  rl = sphericalCapClampLightRadius(rl);
+  coverage = horizonLightingLightSums(n / ln, horizons, l / ll, rl);
+  float s = sin(rl);
+  return coverage.y / (sphericalCapPi * s * s);
+}
+
+// vtkHorizonLighting::SkyTransfer(): the sky through the sectors' open wedges less the lights'
+// coverage (their sums).
+float horizonLightingSkyTransfer(
+  vec3 n, float horizons[HORIZON_LIGHTING_SECTORS], vec2 coverage, bool cosineWeighted)
+{
+  float ln = length(n);
+  if (any(isnan(n)) || !(ln > 0.0) || isinf(ln) || any(isnan(coverage)))
+  {
+    return 0.0;
+  }
+  n = n / ln;
+  float width = 2.0 * sphericalCapPi / float(HORIZON_LIGHTING_SECTORS);
+  float open = 0.0;
+  float openCosine = 0.0;
+  for (int k = 0; k < HORIZON_LIGHTING_SECTORS; ++k)
+  {
+    float phi0 = float(k) * width;
+    float phi1 = phi0 + width;
+    float middle = phi0 + 0.5 * width;
+    float h = clamp(horizons[k], -0.5 * sphericalCapPi, 0.5 * sphericalCapPi);
+    float e = max(h, horizonLightingTangent(n, cos(middle), sin(middle)));
+    float sinE = sin(e);
+    float cosE = cos(e);
+    float horizontal = 0.25 * sphericalCapPi - 0.5 * (e + sinE * cosE);
+    open += width * (1.0 - sinE);
+    openCosine += (n.x * (sin(phi1) - sin(phi0)) + n.y * (cos(phi0) - cos(phi1))) * horizontal +
+      n.z * width * 0.5 * cosE * cosE;
+  }
+  return cosineWeighted ? max(0.0, openCosine - coverage.y) / sphericalCapPi
+                        : max(0.0, open - coverage.x) / (2.0 * sphericalCapPi);
+}

@@ -1,0 +1,287 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    TestHorizonLightingGLSL.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+// Evaluates the GLSL twin of vtkHorizonLighting on the GPU (a full-screen pass writing floats,
+// one texel per case) for random horizons, normals and lights of every size, and bad input, and
+// compares with the C++ values.
+
+#include "vtkApertureTestHarness.h"
+#include "vtkHorizonLighting.h"
+#include "vtkHorizonLightingGLSL.h"
+#include "vtkSphericalCap.h"
+#include "vtkSphericalCapGLSL.h"
+
+#include "vtkMath.h"
+#include "vtkMinimalStandardRandomSequence.h"
+#include "vtkNew.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace
+{
+constexpr double Pi = vtkMath::Pi();
+constexpr int Sectors = 32;
+constexpr int Width = 64; // cases per row
+
+// A normal (xyz) and light radius (w); a light direction; 32 horizons.
+struct Case
+{
+  float Normal[4];
+  float Light[4];
+  float Horizons[Sectors];
+};
+
+// Pass 0: transfer, coverage (solid angle, cosine), cosine-weighted sky. Pass 1: the open sky,
+// a decoded code, the horizon at the light's azimuth.
+const char* EvaluatorFS = R"(//VTK::System::Dec
+//VTK::Output::Dec
+uniform sampler2D normals;
+uniform sampler2D lights;
+uniform sampler2D horizonTexels;
+uniform int pass;
+in vec2 texCoord;
+//VTK::HorizonLighting::Dec
+void main()
+{
+  ivec2 texel = ivec2(texCoord * vec2(textureSize(normals, 0)));
+  vec4 p = texelFetch(normals, texel, 0);
+  vec3 l = texelFetch(lights, texel, 0).xyz;
+  float h[HORIZON_LIGHTING_SECTORS];
+  for (int j = 0; j < HORIZON_LIGHTING_SECTORS / 4; ++j)
+  {
+    vec4 four = texelFetch(horizonTexels, ivec2(texel.x * HORIZON_LIGHTING_SECTORS / 4 + j, texel.y), 0);
+    h[4 * j] = four.x;
+    h[4 * j + 1] = four.y;
+    h[4 * j + 2] = four.z;
+    h[4 * j + 3] = four.w;
+  }
+  vec2 coverage;
+  float transfer = horizonLightingLightTransfer(p.xyz, h, l, p.w, coverage);
+  if (pass == 0)
+  {
+    gl_FragData[0] = vec4(transfer, coverage, horizonLightingSkyTransfer(p.xyz, h, coverage, true));
+  }
+  else
+  {
+    float code = float((texel.x + texel.y * textureSize(normals, 0).x) % 256);
+    gl_FragData[0] = vec4(horizonLightingSkyTransfer(p.xyz, h, coverage, false),
+      horizonLightingDecode(code / 255.0), horizonLightingAt(h, sphericalCapAtan2(l.y, l.x)), 0.0);
+  }
+}
+)";
+
+std::vector<Case> MakeCases()
+{
+  vtkNew<vtkMinimalStandardRandomSequence> random;
+  random->SetSeed(5);
+  auto next = [&random](double low, double high)
+  {
+    random->Next();
+    return random->GetRangeValue(low, high);
+  };
+  const double radii[] = { 0.001, 0.0047, 0.064, 0.314, 0.785 };
+  std::vector<Case> cases(4096);
+  for (size_t i = 0; i < cases.size(); ++i)
+  {
+    Case& c = cases[i];
+    const double level = next(-0.3, 0.6), amplitude = next(0.0, 0.4), phase = next(0.0, 2 * Pi);
+    for (int k = 0; k < Sectors; ++k)
+    {
+      const double h =
+        level + amplitude * std::cos(2.0 * Pi * (k + 0.5) / Sectors + phase) + next(-0.05, 0.05);
+      c.Horizons[k] = static_cast<float>(std::min(0.5 * Pi, std::max(-0.5 * Pi, h)));
+    }
+    const double n[3] = { next(-0.6, 0.6), next(-0.6, 0.6), next(0.5, 1.5) };
+    const double rl = i % 6 < 5 ? radii[i % 6] : next(1e-4, 0.785);
+    const double azimuth = next(0.0, 2.0 * Pi);
+    const double base = vtkHorizonLighting::HorizonAt(c.Horizons, Sectors, azimuth);
+    const double elevation = i % 2 == 0
+      ? std::min(0.5 * Pi, std::max(-0.2, base + next(-1.5, 1.5) * rl))
+      : next(-0.1, 0.5 * Pi);
+    const double l[3] = { std::cos(elevation) * std::cos(azimuth),
+      std::cos(elevation) * std::sin(azimuth), std::sin(elevation) };
+    for (int k = 0; k < 3; ++k)
+    {
+      c.Normal[k] = static_cast<float>(n[k]);
+      c.Light[k] = static_cast<float>(2.0 * l[k]);
+    }
+    c.Normal[3] = static_cast<float>(rl);
+    c.Light[3] = 0.0f;
+  }
+  // Bad input: NaN normal, zero light, NaN radius, an oversized light.
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  cases[0].Normal[0] = nan;
+  cases[1].Light[0] = cases[1].Light[1] = cases[1].Light[2] = 0.0f;
+  cases[2].Normal[3] = nan;
+  cases[3].Normal[3] = 50.0f;
+  return cases;
+}
+
+// The C++ values of a case for one pass, in the shader's layout.
+void Expected(const Case& c, int index, int pass, double out[4])
+{
+  const double n[3] = { c.Normal[0], c.Normal[1], c.Normal[2] };
+  const double l[3] = { c.Light[0], c.Light[1], c.Light[2] };
+  double coverage = 0.0, cosine = 0.0;
+  const double transfer =
+    vtkHorizonLighting::LightTransfer(n, c.Horizons, Sectors, l, c.Normal[3], &coverage, &cosine);
+  if (pass == 0)
+  {
+    out[0] = transfer;
+    out[1] = coverage;
+    out[2] = cosine;
+    out[3] = vtkHorizonLighting::SkyTransfer(n, c.Horizons, Sectors, coverage, cosine, true);
+    return;
+  }
+  out[0] = vtkHorizonLighting::SkyTransfer(n, c.Horizons, Sectors, coverage, cosine, false);
+  out[1] = vtkHorizonLighting::DecodeAngle(index % 256);
+  out[2] = vtkHorizonLighting::HorizonAt(c.Horizons, Sectors, std::atan2(l[1], l[0]));
+  out[3] = 0.0;
+}
+
+vtkSmartPointer<vtkTextureObject> Upload(
+  vtkOpenGLRenderWindow* win, int width, int height, std::vector<float>& data)
+{
+  auto tex = vtkSmartPointer<vtkTextureObject>::New();
+  tex->SetContext(win);
+  tex->Create2DFromRaw(width, height, 4, VTK_FLOAT, data.data());
+  return tex;
+}
+
+// Renders one pass of the evaluator into a float target and reads it back.
+std::vector<float> Evaluate(vtkOpenGLRenderWindow* win, vtkOpenGLQuadHelper& quad,
+  vtkTextureObject* textures[3], int pass, int height)
+{
+  vtkNew<vtkTextureObject> target;
+  target->SetContext(win);
+  target->Create2D(Width, height, 4, VTK_FLOAT, false);
+  vtkNew<vtkOpenGLFramebufferObject> fbo;
+  fbo->SetContext(win);
+  vtkOpenGLState* state = win->GetState();
+  state->PushFramebufferBindings();
+  fbo->Bind();
+  fbo->AddColorAttachment(0, target);
+  fbo->ActivateDrawBuffer(0);
+  fbo->ActivateReadBuffer(0);
+  std::vector<float> result(4 * Width * height, std::numeric_limits<float>::quiet_NaN());
+  if (fbo->StartNonOrtho(Width, height))
+  {
+    state->vtkglViewport(0, 0, Width, height);
+    state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglDisable(GL_BLEND);
+    state->vtkglDisable(GL_SCISSOR_TEST);
+    win->GetShaderCache()->ReadyShaderProgram(quad.Program);
+    const char* names[3] = { "normals", "lights", "horizonTexels" };
+    for (int t = 0; t < 3; ++t)
+    {
+      textures[t]->Activate();
+      quad.Program->SetUniformi(names[t], textures[t]->GetTextureUnit());
+    }
+    quad.Program->SetUniformi("pass", pass);
+    quad.Render();
+    glReadPixels(0, 0, Width, height, GL_RGBA, GL_FLOAT, result.data());
+    for (int t = 0; t < 3; ++t)
+    {
+      textures[t]->Deactivate();
+    }
+  }
+  state->PopFramebufferBindings();
+  return result;
+}
+}
+
+int TestHorizonLightingGLSL(int, char*[])
+{
+  vtkNew<vtkRenderWindow> renWin;
+  renWin->SetOffScreenRendering(1);
+  renWin->SetSize(16, 16);
+  vtkNew<vtkRenderer> renderer;
+  renWin->AddRenderer(renderer);
+  renWin->Render();
+  auto* win = vtkOpenGLRenderWindow::SafeDownCast(renWin);
+  win->MakeCurrent();
+
+  const std::vector<Case> cases = MakeCases();
+  const int height = static_cast<int>(cases.size()) / Width;
+  std::vector<float> normals(4 * cases.size()), lights(4 * cases.size());
+  std::vector<float> horizons(Sectors * cases.size());
+  for (size_t i = 0; i < cases.size(); ++i)
+  {
+    std::copy(cases[i].Normal, cases[i].Normal + 4, &normals[4 * i]);
+    std::copy(cases[i].Light, cases[i].Light + 4, &lights[4 * i]);
+    std::copy(cases[i].Horizons, cases[i].Horizons + Sectors, &horizons[Sectors * i]);
+  }
+  vtkSmartPointer<vtkTextureObject> uploaded[3] = { Upload(win, Width, height, normals),
+    Upload(win, Width, height, lights), Upload(win, Width * Sectors / 4, height, horizons) };
+  vtkTextureObject* textures[3] = { uploaded[0], uploaded[1], uploaded[2] };
+
+  std::string fs = EvaluatorFS;
+  vtkShaderProgram::Substitute(fs, "//VTK::HorizonLighting::Dec",
+    "#define HORIZON_LIGHTING_SECTORS " + std::to_string(Sectors) + "\n" +
+      vtkSphericalCap::GetGLSLConstants() + vtkSphericalCapGLSL +
+      vtkHorizonLighting::GetGLSLConstants() + vtkHorizonLightingGLSL);
+  vtkOpenGLQuadHelper quad(win, nullptr, fs.c_str(), "");
+  if (!quad.Program || !quad.Program->GetCompiled())
+  {
+    std::cerr << "The GLSL twin does not compile\n";
+    return EXIT_FAILURE;
+  }
+  const char* names[2][4] = { { "LightTransfer", "coverage", "cosine coverage",
+                                "SkyTransfer cosine-weighted" },
+    { "SkyTransfer", "DecodeAngle", "HorizonAt", "" } };
+  for (int pass = 0; pass < 2; ++pass)
+  {
+    const std::vector<float> result = Evaluate(win, quad, textures, pass, height);
+    double worst[4] = { 0, 0, 0, 0 };
+    for (size_t i = 0; i < cases.size(); ++i)
+    {
+      double want[4];
+      Expected(cases[i], static_cast<int>(i), pass, want);
+      // Transfers and skies (1 = a full light or sky) within 2e-3, half an 8-bit level: float
+      // and double may take the closed form and the quadrature on either side of the edge;
+      // coverages within 2e-3 of the light's own; angles within 1e-5.
+      const double cap = vtkSphericalCap::SolidAngleFromCapRadius(vtkSphericalCap::ClampLightRadius(
+        std::isnan(cases[i].Normal[3]) ? 0.0 : cases[i].Normal[3]));
+      const double tolerance[2][4] = { { 2e-3, 2e-3 * cap, 2e-3 * cap, 2e-3 },
+        { 2e-3, 1e-5, 1e-5, 1.0 } };
+      for (int k = 0; k < 4; ++k)
+      {
+        const double got = result[4 * i + k];
+        const double error = std::abs(got - want[k]);
+        vtkApertureTest::Check(std::isfinite(got) && error <= tolerance[pass][k],
+          std::string(names[pass][k]) + " of case " + std::to_string(i), got, want[k]);
+        worst[k] = std::max(worst[k], std::isfinite(error) ? error : 0.0);
+      }
+    }
+    for (int k = 0; k < 4; ++k)
+    {
+      if (names[pass][k][0])
+      {
+        std::cout << names[pass][k] << ": max |GLSL - C++| = " << worst[k] << "\n";
+      }
+    }
+  }
+  std::cout << cases.size() << " cases evaluated on " << glGetString(GL_RENDERER) << "\n";
+  return vtkApertureTest::Result();
+}
