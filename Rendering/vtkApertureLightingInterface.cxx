@@ -12,6 +12,9 @@
 
 #include "vtkApertureLightingFS.h"
 #include "vtkApertureText.h"
+#include "vtkHorizonLighting.h"
+#include "vtkHorizonLightingCodeGLSL.h"
+#include "vtkHorizonLightingGLSL.h"
 #include "vtkSphericalCap.h"
 #include "vtkSphericalCapGLSL.h"
 
@@ -32,6 +35,7 @@
 #include "vtkMath.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLActor.h"
 #include "vtkOpenGLCamera.h"
@@ -80,6 +84,22 @@ std::string ArrayProblem(vtkDataSet* data, const std::string& name, int componen
     }
   }
   return std::string();
+}
+
+// The most sectors the shaders take; more are resampled.
+constexpr int MaximumShaderSectors = 32;
+
+// Horizons of `sectors` (at most MaximumShaderSectors) as the GPU gets them: 8-bit codes of
+// `in`'s D values, resampled linearly in azimuth to `sectors` when D differs.
+void EncodeHorizons(const std::vector<float>& in, int sectors, unsigned char* codes)
+{
+  const int d = static_cast<int>(in.size());
+  for (int k = 0; k < sectors; ++k)
+  {
+    const double middle = 2.0 * vtkMath::Pi() * (k + 0.5) / sectors;
+    const double h = d == sectors ? in[k] : vtkHorizonLighting::HorizonAt(in.data(), d, middle);
+    codes[k] = static_cast<unsigned char>(vtkHorizonLighting::EncodeAngle(h));
+  }
 }
 
 // Apertures reach the fragment shader as varyings in view coordinates, or as texture
@@ -202,7 +222,7 @@ vtkApertureLightingInterface::~vtkApertureLightingInterface()
 //------------------------------------------------------------------------------
 void vtkApertureLightingInterface::SetShadingMode(int mode)
 {
-  mode = std::min(std::max(mode, static_cast<int>(EXACT)), static_cast<int>(STANDARD));
+  mode = std::min(std::max(mode, static_cast<int>(EXACT)), static_cast<int>(HORIZON));
   if (mode != this->ShadingMode)
   {
     this->ShadingMode = mode;
@@ -227,7 +247,8 @@ void vtkApertureLightingInterface::SetLambertMode(int mode)
 //------------------------------------------------------------------------------
 const char* vtkApertureLightingInterface::GetShadingModeAsString()
 {
-  static const char* names[] = { "Exact", "Smoothstep", "Simplified", "BentNormal", "Standard" };
+  static const char* names[] = { "Exact", "Smoothstep", "Simplified", "BentNormal", "Standard",
+    "Horizon" };
   return names[this->ShadingMode];
 }
 
@@ -252,6 +273,19 @@ void vtkApertureLightingInterface::SetApertureRadiusArrayName(const char* name)
   {
     this->ApertureRadiusArrayName = value;
     this->CheckedTime = 0;
+    this->ShaderTime.Modified();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingInterface::SetHorizonAnglesArrayName(const char* name)
+{
+  const std::string value = name ? name : "";
+  if (value != this->HorizonAnglesArrayName)
+  {
+    this->HorizonAnglesArrayName = value;
+    this->CheckedHorizonsTime = 0;
     this->ShaderTime.Modified();
     this->Modified();
   }
@@ -387,6 +421,117 @@ bool vtkApertureLightingInterface::CheckApertureImage(vtkRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// Why a horizons array cannot be shaded with, or an empty string.
+std::string HorizonProblem(vtkDataSet* data, const std::string& name)
+{
+  vtkDataArray* array = data->GetPointData()->GetArray(name.c_str());
+  if (!array)
+  {
+    return "there is no point-data array named " + vtkApertureText::Quote(name) +
+      " (vtkAperturePrecompute's ComputeHorizonAngles writes it)";
+  }
+  const int sectors = array->GetNumberOfComponents();
+  if (sectors < 4 || sectors > 1024)
+  {
+    return vtkApertureText::Quote(name) + " has " + std::to_string(sectors) +
+      " components; horizons need 4 to 1024 sectors";
+  }
+  if (array->GetNumberOfTuples() != data->GetNumberOfPoints())
+  {
+    return vtkApertureText::Quote(name) + " has " + std::to_string(array->GetNumberOfTuples()) +
+      " tuples for " + std::to_string(data->GetNumberOfPoints()) + " points";
+  }
+  // Single-precision pi/2 lies just past the double one.
+  const double pole = static_cast<float>(0.5 * vtkMath::Pi());
+  for (vtkIdType i = 0; i < array->GetNumberOfValues(); ++i)
+  {
+    const double h = array->GetComponent(i / sectors, static_cast<int>(i % sectors));
+    if (!(h >= -pole && h <= pole))
+    {
+      return vtkApertureText::Quote(name) + " has values that are not angles in [-pi/2, pi/2]";
+    }
+  }
+  return std::string();
+}
+}
+
+//------------------------------------------------------------------------------
+int vtkApertureLightingInterface::CheckHorizons(vtkDataSet* data)
+{
+  vtkDataArray* array =
+    data ? data->GetPointData()->GetArray(this->HorizonAnglesArrayName.c_str()) : nullptr;
+  const vtkMTimeType time = std::max(data ? data->GetMTime() : 0, array ? array->GetMTime() : 0);
+  if (array == this->CheckedHorizons && time <= this->CheckedHorizonsTime && array)
+  {
+    return this->CheckedSectors;
+  }
+  const std::string problem =
+    data ? HorizonProblem(data, this->HorizonAnglesArrayName) : "there is no input";
+  if (!problem.empty() && problem != this->LastHorizonProblem)
+  {
+    vtkWarningMacro("Cannot shade with horizons: " << problem << "; using the exact cap.");
+  }
+  this->LastHorizonProblem = problem;
+  this->CheckedHorizons = array;
+  this->CheckedHorizonsTime = time;
+  this->CheckedSectors =
+    problem.empty() ? std::min(array->GetNumberOfComponents(), MaximumShaderSectors) : 0;
+  return this->CheckedSectors;
+}
+
+//------------------------------------------------------------------------------
+int vtkApertureLightingInterface::GetNumberOfHorizonAttributes(int sectors)
+{
+  const int floats = (sectors + 2) / 3; // three 8-bit codes in a float's exact integers
+  return (floats + 3) / 4;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkApertureLightingInterface::GetHorizonAttributeName(int i)
+{
+  return "apertureHorizons" + std::to_string(i) + "MC";
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingInterface::PackHorizonAttributes(
+  vtkDataSet* data, int sectors, std::vector<vtkSmartPointer<vtkFloatArray>>& attributes)
+{
+  const vtkIdType n = data->GetNumberOfPoints();
+  vtkDataArray* horizons = this->CheckHorizons(data) > 0
+    ? data->GetPointData()->GetArray(this->HorizonAnglesArrayName.c_str())
+    : nullptr;
+  attributes.resize(GetNumberOfHorizonAttributes(sectors));
+  std::vector<float*> values;
+  for (auto& attribute : attributes)
+  {
+    attribute = vtkSmartPointer<vtkFloatArray>::New();
+    attribute->SetNumberOfComponents(4);
+    attribute->SetNumberOfTuples(n);
+    attribute->Fill(0.0);
+    values.push_back(attribute->GetPointer(0));
+  }
+  std::vector<float> in(horizons ? horizons->GetNumberOfComponents() : 1, -0.5f * vtkMath::Pi());
+  std::vector<double> tuple(in.size());
+  std::vector<unsigned char> codes(sectors);
+  for (vtkIdType p = 0; p < n; ++p)
+  {
+    if (horizons)
+    {
+      horizons->GetTuple(p, tuple.data());
+      std::copy(tuple.begin(), tuple.end(), in.begin());
+    }
+    EncodeHorizons(in, sectors, codes.data());
+    for (int k = 0; k < sectors; ++k)
+    {
+      const int word = k / 3;
+      values[word / 4][4 * p + word % 4] += static_cast<float>(codes[k] << (8 * (k % 3)));
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkApertureLightingInterface::Report(const std::string& problem)
 {
   if (!problem.empty() && problem != this->LastProblem)
@@ -399,7 +544,7 @@ void vtkApertureLightingInterface::Report(const std::string& problem)
 //------------------------------------------------------------------------------
 bool vtkApertureLightingInterface::ReplaceShaderLight(
   std::map<vtkShader::Type, vtkShader*>& shaders, vtkActor* actor, vtkRenderer* renderer,
-  int lightComplexity, int lightCount, bool perTexel, bool inputTCoords)
+  int lightComplexity, int lightCount, bool perTexel, bool inputTCoords, int horizonSectors)
 {
   vtkInformation* keys = actor->GetPropertyKeys();
   if (this->ShadingMode == STANDARD || lightComplexity < 1 || lightCount < 1 ||
@@ -415,10 +560,14 @@ bool vtkApertureLightingInterface::ReplaceShaderLight(
   std::string gs = shaders[vtkShader::Geometry]->GetSource();
   std::string fs = shaders[vtkShader::Fragment]->GetSource();
   ReplaceApertureVaryings(vs, gs, perTexel, inputTCoords);
-  vtkShaderProgram::Substitute(
-    fs, "//VTK::Light::Dec", this->GetFragmentDeclarations(renderer, lightCount, perTexel));
+  vtkShaderProgram::Substitute(fs, "//VTK::Light::Dec",
+    this->GetFragmentDeclarations(renderer, lightCount, perTexel, horizonSectors));
   vtkShaderProgram::Substitute(
     fs, "//VTK::Light::Impl", FragmentImplementation(lightComplexity, lightCount), false);
+  if (horizonSectors > 0)
+  {
+    ReplaceHorizonCode(vs, gs, fs, perTexel, horizonSectors);
+  }
   shaders[vtkShader::Vertex]->SetSource(vs);
   shaders[vtkShader::Geometry]->SetSource(gs);
   shaders[vtkShader::Fragment]->SetSource(fs);
@@ -427,20 +576,88 @@ bool vtkApertureLightingInterface::ReplaceShaderLight(
 
 //------------------------------------------------------------------------------
 std::string vtkApertureLightingInterface::GetFragmentDeclarations(
-  vtkRenderer* renderer, int lightCount, bool perTexel)
+  vtkRenderer* renderer, int lightCount, bool perTexel, int horizonSectors)
 {
+  // The cap's model where horizons are asked for: the exact one, for the environment sky and
+  // for data without horizons.
+  const int shading = this->ShadingMode == HORIZON ? EXACT : this->ShadingMode;
   std::ostringstream dec;
   dec << static_cast<vtkOpenGLRenderer*>(renderer)->GetLightingUniforms() << "\n"
-      << vtkSphericalCap::GetGLSLConstants() << "#define APERTURE_SHADING " << this->ShadingMode
-      << "\n"
+      << vtkSphericalCap::GetGLSLConstants() << "#define APERTURE_SHADING " << shading << "\n"
       << "#define APERTURE_LAMBERT " << this->LambertMode << "\n"
       << "#define APERTURE_LIGHT_COUNT " << lightCount << "\n"
       << (perTexel ? "#define APERTURE_PER_TEXEL\n" : "")
       << (this->SkyEnvironment ? "#define APERTURE_SKY_ENVIRONMENT\n" : "") << vtkSphericalCapGLSL
-      << "\n"
-      << vtkApertureLightingFS << "\n"
+      << "\n";
+  if (horizonSectors > 0)
+  {
+    dec << "#define APERTURE_HORIZONS\n"
+        << "#define HORIZON_LIGHTING_SECTORS " << horizonSectors << "\n"
+        << vtkHorizonLighting::GetGLSLConstants() << vtkHorizonLightingCodeGLSL << "\n"
+        << vtkHorizonLightingGLSL << "\n";
+  }
+  dec << vtkApertureLightingFS << "\n"
       << "//VTK::Light::Dec\n";
   return dec.str();
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingInterface::ReplaceHorizonCode(
+  std::string& vs, std::string& gs, std::string& fs, bool perTexel, int sectors)
+{
+  const int outputs = (sectors + 3) / 4;
+  std::ostringstream read;
+  read << "void apertureReadHorizons(out float h[HORIZON_LIGHTING_SECTORS])\n{\n";
+  if (perTexel)
+  {
+    // Four 8-bit codes a layer, filtered between texels.
+    vtkShaderProgram::Substitute(fs, "//APERTURE::Horizons::Dec",
+      "uniform sampler2DArray apertureHorizonTexture;\n//APERTURE::Horizons::Dec");
+    read << "  for (int k = 0; k < HORIZON_LIGHTING_SECTORS; ++k)\n  {\n"
+         << "    vec4 codes = texture(apertureHorizonTexture, vec3(apertureUVVSOutput, "
+            "float(k / 4)));\n"
+         << "    h[k] = horizonLightingDecode(codes[k % 4]);\n  }\n}\n";
+    vtkShaderProgram::Substitute(fs, "//APERTURE::Horizons::Dec", read.str());
+    return;
+  }
+  // Per vertex: the vertex shader decodes three codes a float, four floats an attribute, and
+  // hands the angles on four a varying, which interpolate across the primitive.
+  const int attributes = GetNumberOfHorizonAttributes(sectors);
+  std::ostringstream vsDec, vsImpl, gsDec, gsImpl, fsDec;
+  vsDec << "//VTK::Normal::Dec\n" << vtkHorizonLightingCodeGLSL << "\n";
+  vsImpl << "//VTK::Normal::Impl\n  {\n    vec4 packedHorizons[" << attributes << "] = vec4["
+         << attributes << "](";
+  for (int a = 0; a < attributes; ++a)
+  {
+    vsDec << "in vec4 " << GetHorizonAttributeName(a) << ";\n";
+    vsImpl << (a ? ", " : "") << GetHorizonAttributeName(a);
+  }
+  vsImpl << ");\n    float h[" << 4 * outputs << "];\n"
+         << "    for (int k = 0; k < " << 4 * outputs << "; ++k)\n    {\n"
+         << "      int j = min(k, " << sectors - 1 << ");\n"
+         << "      uint word = uint(packedHorizons[j / 12][(j / 3) % 4]); // exact integers\n"
+         << "      uint code = (word >> uint(8 * (j % 3))) & 255u;\n"
+         << "      h[k] = horizonLightingDecode(float(code) / 255.0);\n    }\n";
+  read << "  vec4 v[" << outputs << "] = vec4[" << outputs << "](";
+  for (int m = 0; m < outputs; ++m)
+  {
+    const std::string name = "apertureHorizon" + std::to_string(m);
+    vsDec << "out vec4 " << name << "VSOutput;\n";
+    vsImpl << "    " << name << "VSOutput = vec4(h[" << 4 * m << "], h[" << 4 * m + 1 << "], h["
+           << 4 * m + 2 << "], h[" << 4 * m + 3 << "]);\n";
+    gsDec << "in vec4 " << name << "VSOutput[];\nout vec4 " << name << "GSOutput;\n";
+    gsImpl << name << "GSOutput = " << name << "VSOutput[i];\n";
+    fsDec << "in vec4 " << name << "VSOutput;\n";
+    read << (m ? ", " : "") << name << "VSOutput";
+  }
+  vsImpl << "  }";
+  read << ");\n  for (int k = 0; k < HORIZON_LIGHTING_SECTORS; ++k)\n  {\n"
+       << "    h[k] = v[k / 4][k % 4];\n  }\n}\n";
+  vtkShaderProgram::Substitute(vs, "//VTK::Normal::Dec", vsDec.str());
+  vtkShaderProgram::Substitute(vs, "//VTK::Normal::Impl", vsImpl.str());
+  vtkShaderProgram::Substitute(gs, "//VTK::Normal::Dec", "//VTK::Normal::Dec\n" + gsDec.str());
+  vtkShaderProgram::Substitute(gs, "//VTK::Normal::Impl", "//VTK::Normal::Impl\n" + gsImpl.str());
+  vtkShaderProgram::Substitute(fs, "//APERTURE::Horizons::Dec", fsDec.str() + read.str());
 }
 
 //------------------------------------------------------------------------------
@@ -470,6 +687,14 @@ void vtkApertureLightingInterface::SetShaderParameters(vtkShaderProgram* program
   if (program->IsUniformUsed("apertureNormalMatrix"))
   {
     program->SetUniformMatrix("apertureNormalMatrix", normalMatrix);
+  }
+  if (program->IsUniformUsed("apertureViewToModel"))
+  {
+    // The normal matrix's transpose takes view directions back to the model's frame for
+    // rotations and uniform scales (SetUniformMatrix() hands GL the transpose of what it gets).
+    vtkNew<vtkMatrix3x3> toModel;
+    vtkMatrix3x3::Transpose(normalMatrix, toModel);
+    program->SetUniformMatrix("apertureViewToModel", toModel);
   }
   this->SetSkyParameters(program, renderer);
   this->SetLightParameters(program, renderer);
@@ -554,6 +779,12 @@ void vtkApertureLightingInterface::SetLightParameters(
 void vtkApertureLightingInterface::SetTextureParameters(vtkShaderProgram* program,
   vtkRenderer* renderer, bool inputTCoords, const double shift[3], const double scale[3])
 {
+  if (program->IsUniformUsed("apertureHorizonTexture") && this->ApertureImage &&
+    this->UploadHorizonTexture(renderer))
+  {
+    this->HorizonTexture->Activate();
+    program->SetUniformi("apertureHorizonTexture", this->HorizonTexture->GetTextureUnit());
+  }
   if (!program->IsUniformUsed("apertureTexture") || !this->ApertureImage)
   {
     return;
@@ -666,6 +897,77 @@ bool vtkApertureLightingInterface::UploadTexture(vtkRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
+// The horizons go up as a 2D texture array (VTK 9.1's texture objects make none, so the handle
+// is this class's) of four 8-bit sectors a layer, a band of rows at a time.
+bool vtkApertureLightingInterface::UploadHorizonTexture(vtkRenderer* renderer)
+{
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  const int sectors = this->CheckHorizons(this->ApertureImage);
+  if (sectors < 1)
+  {
+    return false;
+  }
+  vtkDataArray* horizons =
+    this->ApertureImage->GetPointData()->GetArray(this->HorizonAnglesArrayName.c_str());
+  if (this->HorizonTexture && this->HorizonTexture->GetContext() == window &&
+    this->HorizonTextureTime > std::max(this->ApertureImage->GetMTime(), horizons->GetMTime()) &&
+    this->HorizonTextureSectors == sectors)
+  {
+    return true;
+  }
+  if (this->HorizonTexture && this->HorizonTexture->GetContext() != window)
+  {
+    this->ReleaseGraphicsResources(this->HorizonTexture->GetContext());
+  }
+  if (!this->HorizonTexture)
+  {
+    glGenTextures(1, &this->HorizonTextureHandle);
+    this->HorizonTexture = vtkSmartPointer<vtkTextureObject>::New();
+    this->HorizonTexture->SetContext(window);
+    this->HorizonTexture->AssignToExistingTexture(this->HorizonTextureHandle, GL_TEXTURE_2D_ARRAY);
+  }
+  int dims[3];
+  this->ApertureImage->GetDimensions(dims);
+  const int layers = (sectors + 3) / 4;
+  this->HorizonTexture->Activate();
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA8, dims[0], dims[1], layers, 0, GL_RGBA,
+    GL_UNSIGNED_BYTE, nullptr);
+  const int band = std::max(1, std::min(dims[1], (1 << 20) / std::max(1, dims[0])));
+  const size_t layerSize = 4 * static_cast<size_t>(dims[0]) * band;
+  std::vector<unsigned char> texels(layerSize * layers), codes(sectors);
+  std::vector<float> in(horizons->GetNumberOfComponents());
+  std::vector<double> tuple(in.size());
+  for (int row = 0; row < dims[1]; row += band)
+  {
+    const int rows = std::min(band, dims[1] - row);
+    std::fill(texels.begin(), texels.end(), 0);
+    for (vtkIdType t = 0; t < static_cast<vtkIdType>(rows) * dims[0]; ++t)
+    {
+      horizons->GetTuple(static_cast<vtkIdType>(row) * dims[0] + t, tuple.data());
+      std::copy(tuple.begin(), tuple.end(), in.begin());
+      EncodeHorizons(in, sectors, codes.data());
+      for (int k = 0; k < sectors; ++k)
+      {
+        texels[(k / 4) * layerSize + 4 * t + k % 4] = codes[k];
+      }
+    }
+    for (int m = 0; m < layers; ++m)
+    {
+      glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, row, m, dims[0], rows, 1, GL_RGBA,
+        GL_UNSIGNED_BYTE, &texels[m * layerSize]);
+    }
+  }
+  this->HorizonTexture->Deactivate();
+  this->HorizonTextureTime.Modified();
+  this->HorizonTextureSectors = sectors;
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkApertureLightingInterface::UploadSkyTable(vtkRenderer* renderer)
 {
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
@@ -705,6 +1007,10 @@ void vtkApertureLightingInterface::DeactivateTexture()
   {
     this->SkyTable->Deactivate();
   }
+  if (this->HorizonTexture)
+  {
+    this->HorizonTexture->Deactivate();
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -720,6 +1026,13 @@ void vtkApertureLightingInterface::ReleaseGraphicsResources(vtkWindow* window)
     this->SkyTable->ReleaseGraphicsResources(window);
     this->SkyTable = nullptr;
   }
+  if (this->HorizonTexture)
+  {
+    this->HorizonTexture->ReleaseGraphicsResources(window);
+    this->HorizonTexture = nullptr;
+    glDeleteTextures(1, &this->HorizonTextureHandle);
+    this->HorizonTextureHandle = 0;
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -732,6 +1045,7 @@ void vtkApertureLightingInterface::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "BentNormalArrayName: " << this->BentNormalArrayName << "\n";
   os << indent << "ApertureRadiusArrayName: " << this->ApertureRadiusArrayName << "\n";
+  os << indent << "HorizonAnglesArrayName: " << this->HorizonAnglesArrayName << "\n";
   os << indent << "SkyColor: " << this->SkyColor[0] << ", " << this->SkyColor[1] << ", "
      << this->SkyColor[2] << "\n";
   os << indent << "SkyIntensity: " << this->SkyIntensity << "\n";

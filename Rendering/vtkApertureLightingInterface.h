@@ -51,11 +51,13 @@
 
 #include <map>    // For std::map
 #include <string> // For std::string
+#include <vector> // For std::vector
 
 class vtkActor;
 class vtkDataArray;
 class vtkDataSet;
 class vtkEnvironmentMap;
+class vtkFloatArray;
 class vtkImageData;
 class vtkInformationDoubleKey;
 class vtkLight;
@@ -75,7 +77,8 @@ public:
 
   /**
    * Shading models: the first four are vtkSphericalCap's, which the shaders also get their
-   * values from; STANDARD is VTK's own lighting.
+   * values from; STANDARD is VTK's own lighting; HORIZON shades lights and the uniform sky from
+   * per-sector horizons (vtkHorizonLighting) where the data hold them, the exact cap elsewhere.
    */
   enum ShadingModes
   {
@@ -83,7 +86,8 @@ public:
     SMOOTHSTEP = vtkSphericalCap::SMOOTHSTEP,
     SIMPLIFIED = vtkSphericalCap::SIMPLIFIED,
     BENT_NORMAL = vtkSphericalCap::BENT_NORMAL,
-    STANDARD
+    STANDARD,
+    HORIZON
   };
 
   ///@{
@@ -97,6 +101,7 @@ public:
   void SetShadingModeToSimplified() { this->SetShadingMode(SIMPLIFIED); }
   void SetShadingModeToBentNormal() { this->SetShadingMode(BENT_NORMAL); }
   void SetShadingModeToStandard() { this->SetShadingMode(STANDARD); }
+  void SetShadingModeToHorizon() { this->SetShadingMode(HORIZON); }
   const char* GetShadingModeAsString();
   ///@}
 
@@ -119,6 +124,23 @@ public:
   vtkGetCharFromStdStringMacro(BentNormalArrayName);
   void SetApertureRadiusArrayName(const char* name);
   vtkGetCharFromStdStringMacro(ApertureRadiusArrayName);
+  ///@}
+
+  ///@{
+  /**
+   * The point-data array of per-sector horizons that HORIZON shades from (vtkAperturePrecompute's
+   * ComputeHorizonAngles). Default "HorizonAngles". Its convention is vtkHorizonLighting's, in
+   * the model's frame: sectors counted from +x toward +y around +z, the way a height field made
+   * from the aperture grid (vtkWarpScalar along z, or the grid itself) lies; actors may rotate and
+   * scale uniformly. On the GPU each horizon takes 8 bits (vtkHorizonLighting::EncodeAngle());
+   * more than 32 sectors are resampled to 32 (linear in azimuth). Per vertex they travel as
+   * three vertex attributes; per texel as a 2D texture array of 4 sectors a layer (32 bytes a
+   * texel at 32 sectors), filtered linearly between texels. The uniform sky is the cosine-weighted
+   * sky through the sectors' open wedges (or their open fraction without SkyCosineWeighting); an
+   * environment sky still comes through the cap.
+   */
+  void SetHorizonAnglesArrayName(const char* name);
+  vtkGetCharFromStdStringMacro(HorizonAnglesArrayName);
   ///@}
 
   ///@{
@@ -214,13 +236,36 @@ public:
   bool CheckApertureImage(vtkRenderer* renderer);
 
   /**
+   * For the mappers in HORIZON mode: the sectors the shaders get from a dataset's horizons (the
+   * image's, per texel), or 0 where they cannot be used (missing, wrong component count, values
+   * outside ±π/2 or not finite), with one warning per new problem: the exact cap applies then.
+   * Cached on the array's modification time.
+   */
+  int CheckHorizons(vtkDataSet* data);
+
+  ///@{
+  /**
+   * For the mappers: the vertex attributes that carry horizons per vertex
+   * (GetHorizonAttributeName(i), i < GetNumberOfHorizonAttributes(sectors)), and their values for
+   * a dataset: three 8-bit codes per float (exact integers), four floats per attribute, resampled
+   * to `sectors`; open (−π/2) where the dataset has no usable horizons.
+   */
+  static int GetNumberOfHorizonAttributes(int sectors);
+  static std::string GetHorizonAttributeName(int i);
+  void PackHorizonAttributes(
+    vtkDataSet* data, int sectors, std::vector<vtkSmartPointer<vtkFloatArray>>& attributes);
+  ///@}
+
+  /**
    * For the mappers: writes the aperture lighting code into the shaders, or returns false where
    * standard shading applies (STANDARD, lighting off, PBR, the lighting-map pass keys).
    * perTexel selects texture lookups; inputTCoords whether their coordinates come from the
-   * input's texture coordinates.
+   * input's texture coordinates; horizonSectors > 0 shades from that many sectors of horizons
+   * (CheckHorizons()).
    */
   bool ReplaceShaderLight(std::map<vtkShader::Type, vtkShader*>& shaders, vtkActor* actor,
-    vtkRenderer* renderer, int lightComplexity, int lightCount, bool perTexel, bool inputTCoords);
+    vtkRenderer* renderer, int lightComplexity, int lightCount, bool perTexel, bool inputTCoords,
+    int horizonSectors = 0);
 
   /**
    * For the mappers: sets the uniforms the lighting code uses (light radii, sky, the aperture
@@ -256,6 +301,7 @@ protected:
   int LambertMode = vtkSphericalCap::CENTROID;
   std::string BentNormalArrayName = "BentNormal";
   std::string ApertureRadiusArrayName = "ApertureRadius";
+  std::string HorizonAnglesArrayName = "HorizonAngles";
   double SkyColor[3] = { 1.0, 1.0, 1.0 };
   double SkyIntensity = 0.0;
   bool SkyCosineWeighting = true;
@@ -269,7 +315,8 @@ private:
 
   // The fragment shader's declarations: VTK's lighting uniforms, the GLSL sources and the
   // defines that configure them.
-  std::string GetFragmentDeclarations(vtkRenderer* renderer, int lightCount, bool perTexel);
+  std::string GetFragmentDeclarations(
+    vtkRenderer* renderer, int lightCount, bool perTexel, int horizonSectors);
   // The parts of SetShaderParameters().
   void SetSkyParameters(vtkShaderProgram* program, vtkRenderer* renderer);
   void SetLightParameters(vtkShaderProgram* program, vtkRenderer* renderer);
@@ -277,6 +324,12 @@ private:
     const double shift[3], const double scale[3]);
   // Uploads the aperture image as a texture when it changed; false when OpenGL cannot make it.
   bool UploadTexture(vtkRenderer* renderer);
+  // Uploads the aperture image's horizons as a 2D texture array when they changed.
+  bool UploadHorizonTexture(vtkRenderer* renderer);
+  // The fragment shader's apertureReadHorizons() and, per vertex, the vertex and geometry
+  // shaders' decoding and passing of the horizons.
+  static void ReplaceHorizonCode(
+    std::string& vs, std::string& gs, std::string& fs, bool perTexel, int sectors);
   // Warns about a new problem (none when empty) once, and remembers it.
   void Report(const std::string& problem);
   // Builds the environment sky's table and uploads it as a 3D texture, when the environment's
@@ -287,6 +340,14 @@ private:
   vtkSmartPointer<vtkTextureObject> Texture;
   vtkTimeStamp TextureTime;
   vtkSmartPointer<vtkTextureObject> SkyTable;
+  vtkSmartPointer<vtkTextureObject> HorizonTexture;
+  unsigned int HorizonTextureHandle = 0;
+  vtkTimeStamp HorizonTextureTime;
+  int HorizonTextureSectors = 0;
+  vtkDataArray* CheckedHorizons = nullptr;
+  vtkMTimeType CheckedHorizonsTime = 0;
+  int CheckedSectors = 0;
+  std::string LastHorizonProblem;
   vtkMTimeType SkyTableTime = 0;
   std::string LastProblem;
   vtkDataArray* CheckedArrays[2] = { nullptr, nullptr };

@@ -13,6 +13,7 @@
 #include "vtkActor.h"
 #include "vtkApertureCellCheck.h"
 #include "vtkDataArray.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkMatrix3x3.h"
 #include "vtkObjectFactory.h"
@@ -23,18 +24,21 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
+#include <algorithm>
 #include <string>
+#include <vector>
 
 vtkStandardNewMacro(vtkApertureLightingMapper);
 
 namespace
 {
-// What a render shades with.
+// What a render shades with; the horizons' sector count, if any, above these bits.
 enum StateBits
 {
   Apertures = 1,    // apertures are usable and the model is not standard
   PerTexel = 2,     // read from the aperture image
   InputTCoords = 4, // with the input's texture coordinates
+  SectorShift = 3,
 };
 }
 
@@ -91,7 +95,12 @@ void vtkApertureLightingMapper::RenderPiece(vtkRenderer* renderer, vtkActor* act
       state = Apertures | (image ? PerTexel : 0) | (inputTCoords ? InputTCoords : 0);
     }
   }
-  this->State = state;
+  this->HorizonSectors =
+    (state & Apertures) && this->Lighting->GetShadingMode() == vtkApertureLightingInterface::HORIZON
+    ? this->Lighting->CheckHorizons(
+        (state & PerTexel) ? static_cast<vtkDataSet*>(this->Lighting->GetApertureImage()) : input)
+    : 0;
+  this->State = state | (this->HorizonSectors << SectorShift);
   this->MapApertureAttributes(input);
   this->Superclass::RenderPiece(renderer, actor);
 }
@@ -100,12 +109,22 @@ void vtkApertureLightingMapper::RenderPiece(vtkRenderer* renderer, vtkActor* act
 void vtkApertureLightingMapper::MapApertureAttributes(vtkPolyData* input)
 {
   const bool perVertex = (this->State & Apertures) && !(this->State & PerTexel);
-  const std::pair<const char*, std::string> wanted[] = {
+  std::vector<std::pair<std::string, std::string>> wanted = {
     { "bentNormalMC", perVertex ? this->Lighting->GetBentNormalArrayName() : "" },
     { "apertureRadiusMC", perVertex ? this->Lighting->GetApertureRadiusArrayName() : "" },
     { "apertureTCoordMC",
       (this->State & InputTCoords) ? input->GetPointData()->GetTCoords()->GetName() : "" },
   };
+  // The packed horizons are named as their attributes (in the packed copy only).
+  const int horizonAttributes = vtkApertureLightingInterface::GetNumberOfHorizonAttributes(32);
+  for (int i = 0; i < horizonAttributes; ++i)
+  {
+    const std::string name = vtkApertureLightingInterface::GetHorizonAttributeName(i);
+    const bool used = perVertex &&
+      i < vtkApertureLightingInterface::GetNumberOfHorizonAttributes(this->HorizonSectors) &&
+      this->HorizonSectors > 0;
+    wanted.emplace_back(name, used ? name : "");
+  }
   for (const auto& attribute : wanted)
   {
     // Mapping modifies the mapper (and so rebuilds its buffers): only on change.
@@ -118,14 +137,55 @@ void vtkApertureLightingMapper::MapApertureAttributes(vtkPolyData* input)
     }
     if (attribute.second.empty())
     {
-      this->RemoveVertexAttributeMapping(attribute.first);
+      this->RemoveVertexAttributeMapping(attribute.first.c_str());
     }
     else
     {
-      this->MapDataArrayToVertexAttribute(
-        attribute.first, attribute.second.c_str(), vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+      this->MapDataArrayToVertexAttribute(attribute.first.c_str(), attribute.second.c_str(),
+        vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
     }
   }
+}
+
+//------------------------------------------------------------------------------
+vtkPolyData* vtkApertureLightingMapper::GetPackedInput(vtkPolyData* input)
+{
+  vtkDataArray* horizons =
+    input->GetPointData()->GetArray(this->Lighting->GetHorizonAnglesArrayName());
+  const vtkMTimeType time = std::max(input->GetMTime(), horizons ? horizons->GetMTime() : 0);
+  if (!this->PackedInput || time > this->PackedTime || this->PackedSectors != this->HorizonSectors)
+  {
+    std::vector<vtkSmartPointer<vtkFloatArray>> attributes;
+    this->Lighting->PackHorizonAttributes(input, this->HorizonSectors, attributes);
+    this->PackedInput = vtkSmartPointer<vtkPolyData>::New();
+    this->PackedInput->ShallowCopy(input);
+    for (size_t i = 0; i < attributes.size(); ++i)
+    {
+      attributes[i]->SetName(
+        vtkApertureLightingInterface::GetHorizonAttributeName(static_cast<int>(i)).c_str());
+      this->PackedInput->GetPointData()->AddArray(attributes[i]);
+    }
+    this->PackedTime = time;
+    this->PackedSectors = this->HorizonSectors;
+  }
+  return this->PackedInput;
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingMapper::BuildBufferObjects(vtkRenderer* renderer, vtkActor* actor)
+{
+  const bool packed =
+    this->HorizonSectors > 0 && (this->State & Apertures) && !(this->State & PerTexel);
+  if (!packed || !this->CurrentInput)
+  {
+    this->PackedInput = nullptr;
+    this->Superclass::BuildBufferObjects(renderer, actor);
+    return;
+  }
+  vtkPolyData* input = this->CurrentInput;
+  this->CurrentInput = this->GetPackedInput(input);
+  this->Superclass::BuildBufferObjects(renderer, actor);
+  this->CurrentInput = input;
 }
 
 //------------------------------------------------------------------------------
@@ -147,7 +207,8 @@ void vtkApertureLightingMapper::ReplaceShaderLight(
   const auto& info = this->PrimitiveInfo[this->LastBoundBO];
   if (!(this->State & Apertures) || this->DrawingTubesOrSpheres(*this->LastBoundBO, actor) ||
     !this->Lighting->ReplaceShaderLight(shaders, actor, renderer, info.LastLightComplexity,
-      info.LastLightCount, (this->State & PerTexel) != 0, (this->State & InputTCoords) != 0))
+      info.LastLightCount, (this->State & PerTexel) != 0, (this->State & InputTCoords) != 0,
+      this->HorizonSectors))
   {
     this->Superclass::ReplaceShaderLight(shaders, renderer, actor);
   }
@@ -189,6 +250,7 @@ void vtkApertureLightingMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Lighting->ReleaseGraphicsResources(window);
   this->ShaderState.clear();
+  this->PackedInput = nullptr;
   this->Superclass::ReleaseGraphicsResources(window);
 }
 

@@ -21,7 +21,10 @@
  *
  * Shading models, switchable at run time: exact intersection area (with the paper's centroid
  * Lambert factor, or the exact lens moment), the paper's smoothstep approximation, the 2006 demo's
- * simplified variant, bent normal only, and VTK's standard lighting. For an unoccluded point
+ * simplified variant, bent normal only, VTK's standard lighting, and Horizon, which shades from
+ * the per-sector horizons that vtkAperturePrecompute keeps for height fields
+ * (ComputeHorizonAngles; see vtkHorizonLighting), where one cap is wrong under a low sun, and
+ * falls back to the exact cap, with one warning, on data without them. For an unoccluded point
  * a light of intensity I gives the same irradiance as in VTK's own lighting, so the models and
  * standard shading stay comparable.
  *
@@ -42,6 +45,7 @@
 #include "vtkApertureLightingRenderingModule.h" // For export macro
 #include "vtkNew.h"                             // For vtkNew
 #include "vtkOpenGLPolyDataMapper.h"
+#include "vtkSmartPointer.h" // For vtkSmartPointer
 
 #include <map> // For std::map
 
@@ -68,6 +72,7 @@ public:
   void SetShadingModeToSimplified() { this->Lighting->SetShadingModeToSimplified(); }
   void SetShadingModeToBentNormal() { this->Lighting->SetShadingModeToBentNormal(); }
   void SetShadingModeToStandard() { this->Lighting->SetShadingModeToStandard(); }
+  void SetShadingModeToHorizon() { this->Lighting->SetShadingModeToHorizon(); }
   ///@}
 
   ///@{
@@ -81,7 +86,7 @@ public:
 
   ///@{
   /**
-   * Names of the aperture arrays. Defaults: "BentNormal", "ApertureRadius".
+   * Names of the aperture arrays. Defaults: "BentNormal", "ApertureRadius", "HorizonAngles".
    */
   void SetBentNormalArrayName(const char* name) { this->Lighting->SetBentNormalArrayName(name); }
   const char* GetBentNormalArrayName() { return this->Lighting->GetBentNormalArrayName(); }
@@ -90,6 +95,11 @@ public:
     this->Lighting->SetApertureRadiusArrayName(name);
   }
   const char* GetApertureRadiusArrayName() { return this->Lighting->GetApertureRadiusArrayName(); }
+  void SetHorizonAnglesArrayName(const char* name)
+  {
+    this->Lighting->SetHorizonAnglesArrayName(name);
+  }
+  const char* GetHorizonAnglesArrayName() { return this->Lighting->GetHorizonAnglesArrayName(); }
   ///@}
 
   ///@{
@@ -160,6 +170,9 @@ protected:
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* renderer, vtkActor* actor) override;
   void SetMapperShaderParameters(
     vtkOpenGLHelper& cellBO, vtkRenderer* renderer, vtkActor* actor) override;
+  // Horizons per vertex reach the buffers from a shallow copy of the input that holds them
+  // packed, so that the input keeps its arrays.
+  void BuildBufferObjects(vtkRenderer* renderer, vtkActor* actor) override;
 
   vtkNew<vtkApertureLightingInterface> Lighting;
 
@@ -169,6 +182,13 @@ private:
 
   // Maps the aperture arrays (or texture coordinates) to vertex attributes when they change.
   void MapApertureAttributes(vtkPolyData* input);
+  // The input with its horizons packed (vtkApertureLightingInterface::PackHorizonAttributes()),
+  // remade when the input or the sector count changes.
+  vtkPolyData* GetPackedInput(vtkPolyData* input);
+  vtkSmartPointer<vtkPolyData> PackedInput;
+  vtkMTimeType PackedTime = 0;
+  int PackedSectors = 0;
+  int HorizonSectors = 0;
 
   // Whether the input's cells name only its points (checked when the input changes): VTK's
   // buffer code reads through them unchecked.

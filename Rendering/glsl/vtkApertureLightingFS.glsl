@@ -2,8 +2,9 @@
 // vtkApertureLightingInterface. Needs vtkSphericalCap::GetGLSLConstants(), vtkSphericalCapGLSL
 // and VTK's lighting uniforms first, and these defines: APERTURE_SHADING and APERTURE_LAMBERT
 // (vtkSphericalCap's model and Lambert factor), APERTURE_LIGHT_COUNT, and optionally
-// APERTURE_PER_TEXEL (apertures from a texture) and APERTURE_SKY_ENVIRONMENT (the sky from an
-// environment). The caps are prepared once, the aperture per fragment and the light per light,
+// APERTURE_PER_TEXEL (apertures from a texture), APERTURE_SKY_ENVIRONMENT (the sky from an
+// environment) and APERTURE_HORIZONS (lights and the uniform sky above per-sector horizons, with
+// vtkHorizonLightingGLSL first and apertureReadHorizons() written in at the mark below). The caps are prepared once, the aperture per fragment and the light per light,
 // so that the shading itself needs no trigonometry outside the penumbra.
 //
 // main() calls apertureBeginFragment(), one light function per light (VTK names each light's
@@ -27,6 +28,12 @@ in vec2 apertureUVVSOutput;
 #else
 in vec3 bentNormalVCVSOutput;
 in float apertureRadiusVSOutput;
+#endif
+
+#ifdef APERTURE_HORIZONS
+// View coordinates to the horizons' frame (the model's x, y and z).
+uniform mat3 apertureViewToModel;
+//APERTURE::Horizons::Dec
 #endif
 
 // The aperture at a fragment: the bent normal made unit (the normal n stands in where
@@ -56,8 +63,9 @@ sphericalCapCap apertureSphereLightCap(vec3 L, float R, float D)
 }
 
 // What a fragment gathers: its unit normal, position and direction to the eye in view
-// coordinates, its specular power and aperture, and the sums over the lights (the diffuse and
-// specular light, and the part of the aperture the lights cover).
+// coordinates, its specular power and aperture (and horizons), and the sums over the lights (the
+// diffuse and specular light, and the part of the aperture the lights cover, in solid angle and
+// in the integral of n . w).
 struct apertureFragment
 {
   vec3 normal;
@@ -68,6 +76,11 @@ struct apertureFragment
   vec3 diffuse;
   vec3 specular;
   float covered;
+  float coveredCosine;
+#ifdef APERTURE_HORIZONS
+  vec3 normalModel;
+  float horizons[HORIZON_LIGHTING_SECTORS];
+#endif
 };
 
 // A fragment with its aperture and no light yet; n is the unit normal in view coordinates.
@@ -86,8 +99,21 @@ apertureFragment apertureBeginFragment(vec3 n, vec3 position, float specularPowe
   {
     bent = -bent;
   }
-  return apertureFragment(n, position, normalize(-position), specularPower,
-    apertureCap(bent, radius, n), vec3(0.0), vec3(0.0), 0.0);
+  apertureFragment f;
+  f.normal = n;
+  f.position = position;
+  f.view = normalize(-position);
+  f.specularPower = specularPower;
+  f.aperture = apertureCap(bent, radius, n);
+  f.diffuse = vec3(0.0);
+  f.specular = vec3(0.0);
+  f.covered = 0.0;
+  f.coveredCosine = 0.0;
+#ifdef APERTURE_HORIZONS
+  f.normalModel = apertureViewToModel * n;
+  apertureReadHorizons(f.horizons);
+#endif
+  return f;
 }
 
 // Adds a light of colour `color` (VTK's intensity times colour) to the fragment's sums, and the
@@ -103,9 +129,17 @@ void apertureAddLight(inout apertureFragment f, sphericalCapCap light, vec3 colo
   float seen = 1.0;
   if (f.aperture.radius >= 0.0)
   {
+#ifdef APERTURE_HORIZONS
+    vec2 sums;
+    transfer = horizonLightingLightTransfer(
+      f.normalModel, f.horizons, apertureViewToModel * L, light.radius, sums);
+    float coverage = sums.x;
+    f.coveredCosine += sums.y;
+#else
     float coverage;
     transfer =
       sphericalCapShade(APERTURE_SHADING, APERTURE_LAMBERT, n, f.aperture, light, coverage);
+#endif
     f.covered += coverage;
     seen = clamp(coverage / (4.0 * sphericalCapPi * light.halfSin * light.halfSin), 0.0, 1.0);
   }
@@ -194,9 +228,13 @@ vec4 apertureEndFragment(apertureFragment f, vec3 ambientColor, vec3 diffuseColo
   if (f.aperture.radius >= 0.0)
   {
     float cosNormalBent = dot(f.normal, f.aperture.axis);
-#ifdef APERTURE_SKY_ENVIRONMENT
+#if defined(APERTURE_SKY_ENVIRONMENT)
     diffuse += apertureSkyColor *
       apertureSkyEnvironment(f.aperture, f.covered, cosNormalBent, apertureSkyCosine != 0);
+#elif defined(APERTURE_HORIZONS)
+    diffuse += apertureSkyColor *
+      horizonLightingSkyTransfer(
+        f.normalModel, f.horizons, vec2(f.covered, f.coveredCosine), apertureSkyCosine != 0);
 #else
     diffuse += apertureSkyColor *
       sphericalCapSkyShade(f.aperture, f.covered, cosNormalBent, apertureSkyCosine != 0);

@@ -1,14 +1,7 @@
 // ApertureLighting: the GLSL twin of vtkHorizonLighting (see that class for the conventions and
-// the formulas). Needs vtkSphericalCapGLSL (for its pi and atan2), vtkHorizonLighting's
-// GetGLSLConstants(), and HORIZON_LIGHTING_SECTORS, the number of sectors of the arrays taken.
-
-// A horizon from its 8-bit code read as a normalised value v = code / 255:
-// t = 2v - 1, h = (pi/2) t |t|.
-float horizonLightingDecode(float v)
-{
-  float t = 2.0 * v - 1.0;
-  return 0.5 * sphericalCapPi * t * abs(t);
-}
+// the formulas). Needs vtkSphericalCapGLSL (for its pi and atan2), vtkHorizonLightingCodeGLSL,
+// vtkHorizonLighting's GetGLSLConstants(), and HORIZON_LIGHTING_SECTORS, the number of sectors
+// of the arrays taken.
 
 // The horizon at an azimuth, linear between sector middles, around the circle.
 float horizonLightingAt(float horizons[HORIZON_LIGHTING_SECTORS], float azimuth)

@@ -14,6 +14,7 @@
 
 #include "vtkApertureTestHarness.h"
 #include "vtkHorizonLighting.h"
+#include "vtkHorizonLightingCodeGLSL.h"
 #include "vtkHorizonLightingGLSL.h"
 #include "vtkSphericalCap.h"
 #include "vtkSphericalCapGLSL.h"
@@ -240,7 +241,7 @@ int TestHorizonLightingGLSL(int, char*[])
   vtkShaderProgram::Substitute(fs, "//VTK::HorizonLighting::Dec",
     "#define HORIZON_LIGHTING_SECTORS " + std::to_string(Sectors) + "\n" +
       vtkSphericalCap::GetGLSLConstants() + vtkSphericalCapGLSL +
-      vtkHorizonLighting::GetGLSLConstants() + vtkHorizonLightingGLSL);
+      vtkHorizonLighting::GetGLSLConstants() + vtkHorizonLightingCodeGLSL + vtkHorizonLightingGLSL);
   vtkOpenGLQuadHelper quad(win, nullptr, fs.c_str(), "");
   if (!quad.Program || !quad.Program->GetCompiled())
   {

@@ -1,0 +1,360 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    TestApertureLightingMapperHorizons.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+// The Horizon mode of vtkApertureLightingMapper, pixel by pixel: camera-facing quads (the
+// model's +z toward the camera is "up"), each with its own normal and horizons, lit by suns of
+// several sizes low over the horizons, by a sphere light and by the sky. Every tested pixel must
+// match vtkHorizonLighting on the 8-bit horizons within 1/255, per vertex (24 sectors, in vertex
+// attributes) and per texel (48 sectors, resampled to 32 in a texture array); data without
+// horizons, or with bad ones, warn once and get the exact cap.
+
+#include "vtkApertureLightingMapper.h"
+#include "vtkApertureTestHarness.h"
+#include "vtkHorizonLighting.h"
+#include "vtkSphericalCap.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCommand.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkTestErrorObserver.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <vector>
+
+namespace
+{
+using vtkApertureTest::Check;
+
+constexpr double Pi = vtkMath::Pi();
+constexpr int Grid = 9;           // quads per side
+constexpr int Size = 30;          // pixels per quad side
+constexpr int Side = Grid * Size; // the window's, in pixels
+
+struct Quad
+{
+  double Normal[3];
+  std::vector<float> Horizons;
+};
+
+// Smooth horizons with a ridge toward azimuth `ridge`, as the 8-bit codes decode them after
+// resampling to `gpu` sectors.
+std::vector<float> Horizons(int sectors, double level, double ridge)
+{
+  std::vector<float> h(sectors);
+  for (int k = 0; k < sectors; ++k)
+  {
+    const double phi = 2.0 * Pi * (k + 0.5) / sectors;
+    h[k] = static_cast<float>(level + 0.25 * std::cos(phi - ridge));
+  }
+  return h;
+}
+
+std::vector<float> AsTheGPUSees(const std::vector<float>& h, int gpu)
+{
+  std::vector<float> out(gpu);
+  for (int k = 0; k < gpu; ++k)
+  {
+    const double middle = 2.0 * Pi * (k + 0.5) / gpu;
+    const double value = static_cast<int>(h.size()) == gpu
+      ? h[k]
+      : vtkHorizonLighting::HorizonAt(h.data(), static_cast<int>(h.size()), middle);
+    out[k] =
+      static_cast<float>(vtkHorizonLighting::DecodeAngle(vtkHorizonLighting::EncodeAngle(value)));
+  }
+  return out;
+}
+
+std::vector<Quad> MakeQuads(int sectors)
+{
+  vtkMath::RandomSeed(9);
+  std::vector<Quad> quads(Grid * Grid);
+  for (Quad& q : quads)
+  {
+    const double tilt = vtkMath::Random(0.0, 0.6), turn = vtkMath::Random(0.0, 2.0 * Pi);
+    q.Normal[0] = std::sin(tilt) * std::cos(turn);
+    q.Normal[1] = std::sin(tilt) * std::sin(turn);
+    q.Normal[2] = std::cos(tilt);
+    q.Horizons = Horizons(sectors, vtkMath::Random(-0.1, 0.3), vtkMath::Random(0.0, 2.0 * Pi));
+  }
+  return quads;
+}
+
+// Grid x Grid quads filling the window, 4 points each with the quad's normal and horizons, and a
+// cap (bent normal = normal, radius 1) for the arrays every aperture needs.
+vtkSmartPointer<vtkPolyData> MakeMesh(const std::vector<Quad>& quads)
+{
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> cells;
+  vtkNew<vtkFloatArray> normals, bent, radius, horizons;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  bent->SetName("BentNormal");
+  bent->SetNumberOfComponents(3);
+  radius->SetName("ApertureRadius");
+  horizons->SetName("HorizonAngles");
+  horizons->SetNumberOfComponents(static_cast<int>(quads[0].Horizons.size()));
+  for (int j = 0; j < Grid; ++j)
+  {
+    for (int i = 0; i < Grid; ++i)
+    {
+      const Quad& q = quads[i + Grid * j];
+      const double x0 = -0.5 * Side + Size * i, y0 = -0.5 * Side + Size * j;
+      const vtkIdType first = points->GetNumberOfPoints();
+      const double corners[4][2] = { { x0, y0 }, { x0 + Size, y0 }, { x0 + Size, y0 + Size },
+        { x0, y0 + Size } };
+      for (const auto& c : corners)
+      {
+        points->InsertNextPoint(c[0], c[1], 0.0);
+        normals->InsertNextTuple(q.Normal);
+        bent->InsertNextTuple(q.Normal);
+        radius->InsertNextValue(1.0);
+        std::vector<double> h(q.Horizons.begin(), q.Horizons.end());
+        horizons->InsertNextTuple(h.data());
+      }
+      const vtkIdType quad[4] = { first, first + 1, first + 2, first + 3 };
+      cells->InsertNextCell(4, quad);
+    }
+  }
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(points);
+  mesh->SetPolys(cells);
+  mesh->GetPointData()->SetNormals(normals);
+  mesh->GetPointData()->AddArray(bent);
+  mesh->GetPointData()->AddArray(radius);
+  mesh->GetPointData()->AddArray(horizons);
+  return mesh;
+}
+
+struct Scene
+{
+  double Light[3]; // toward a directional light, or a sphere light's centre
+  double Radius;   // angular (directional) or world (positional)
+  bool Positional;
+  double Sky;
+};
+
+// The expected 0..1 value at world position p of a quad with these horizons (as the GPU sees
+// them), or of the exact cap where `cap` is set.
+double Expected(const Scene& s, const double n[3], const std::vector<float>& h, const double p[3],
+  double intensity, bool cap)
+{
+  double l[3] = { s.Light[0], s.Light[1], s.Light[2] };
+  double rl = s.Radius;
+  if (s.Positional)
+  {
+    vtkMath::Subtract(s.Light, p, l);
+    rl = vtkSphericalCap::SphereLightCapRadius(s.Radius, vtkMath::Norm(l));
+  }
+  if (cap)
+  {
+    const double t = vtkSphericalCap::LightTransfer(
+      vtkSphericalCap::EXACT, vtkSphericalCap::CENTROID, n, n, 1.0, l, rl);
+    const double covered = vtkSphericalCap::LightCoverage(vtkSphericalCap::EXACT, n, 1.0, l, rl);
+    return std::min(
+      1.0, intensity * t + s.Sky * vtkSphericalCap::SkyTransfer(1.0, covered, 1.0, true));
+  }
+  const int sectors = static_cast<int>(h.size());
+  double coverage, cosine;
+  const double t =
+    vtkHorizonLighting::LightTransfer(n, h.data(), sectors, l, rl, &coverage, &cosine);
+  const double sky = vtkHorizonLighting::SkyTransfer(n, h.data(), sectors, coverage, cosine, true);
+  return std::min(1.0, intensity * t + s.Sky * sky);
+}
+
+class Bench
+{
+public:
+  Bench()
+  {
+    this->Mapper->ScalarVisibilityOff();
+    this->Mapper->SetShadingModeToHorizon();
+    this->Actor->SetMapper(this->Mapper);
+    this->Actor->GetProperty()->SetAmbient(0.0);
+    this->Actor->GetProperty()->SetDiffuse(1.0);
+    this->Actor->GetProperty()->SetSpecular(0.0);
+    this->Renderer->AddActor(this->Actor);
+    vtkCamera* camera = this->Renderer->GetActiveCamera();
+    camera->ParallelProjectionOn();
+    camera->SetParallelScale(0.5 * Side);
+    camera->SetPosition(0, 0, 1000);
+    camera->SetFocalPoint(0, 0, 0);
+    camera->SetViewUp(0, 1, 0);
+    camera->SetClippingRange(500, 1500);
+    this->Light->SetLightTypeToSceneLight();
+    this->Light->SetIntensity(this->Intensity);
+    this->Light->SetConeAngle(180.0);
+    this->Renderer->AddLight(this->Light);
+    this->Window->SetSize(Side, Side);
+    this->Window->SetMultiSamples(0);
+    this->Window->AddRenderer(this->Renderer);
+    this->Mapper->GetApertureLighting()->AddObserver(vtkCommand::WarningEvent, this->Observer);
+  }
+
+  // Renders a scene and returns the largest difference (/255) from the expected pixels.
+  double Run(const Scene& s, const std::vector<Quad>& quads, int gpuSectors, bool cap)
+  {
+    this->Mapper->SetSkyIntensity(s.Sky);
+    this->Light->SetPositional(s.Positional);
+    this->Light->SetPosition(s.Light);
+    this->Light->SetFocalPoint(0, 0, 0);
+    vtkApertureLightingMapper::SetLightRadius(this->Light, s.Radius);
+    this->Window->Render();
+    vtkNew<vtkUnsignedCharArray> pixels;
+    this->Window->GetPixelData(0, 0, Side - 1, Side - 1, 1, pixels, 0);
+    double worst = 0.0;
+    for (int j = 0; j < Grid; ++j)
+    {
+      for (int i = 0; i < Grid; ++i)
+      {
+        const Quad& q = quads[i + Grid * j];
+        const std::vector<float> h = AsTheGPUSees(q.Horizons, gpuSectors);
+        for (int py = Size * j + 3; py < Size * (j + 1) - 3; py += 4)
+        {
+          for (int px = Size * i + 3; px < Size * (i + 1) - 3; px += 4)
+          {
+            const double p[3] = { -0.5 * Side + px + 0.5, -0.5 * Side + py + 0.5, 0.0 };
+            const double want = 255.0 * Expected(s, q.Normal, h, p, this->Intensity, cap);
+            const double d = std::abs(pixels->GetValue(3 * (px + Side * py)) - want);
+            worst = std::max(worst, d);
+          }
+        }
+      }
+    }
+    return worst;
+  }
+
+  const double Intensity = 0.8;
+  vtkNew<vtkApertureLightingMapper> Mapper;
+  vtkNew<vtkActor> Actor;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkLight> Light;
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkTest::ErrorObserver> Observer;
+};
+
+std::vector<Scene> Scenes()
+{
+  // Suns low over the horizons (elevations about 8 and 20 degrees) and a high one, a sphere
+  // light, and the sky.
+  std::vector<Scene> scenes;
+  for (double radius : { 0.0047, 0.064, 0.4 })
+  {
+    scenes.push_back({ { 0.98, 0.1, 0.14 }, radius, false, 0.0 });
+    scenes.push_back({ { -0.5, 0.8, 0.35 }, radius, false, 0.3 });
+  }
+  scenes.push_back({ { 0.2, 0.3, 0.9 }, 0.1, false, 0.3 });
+  scenes.push_back({ { 80.0, -60.0, 40.0 }, 30.0, true, 0.2 });
+  return scenes;
+}
+
+void TestPerVertex(Bench& bench)
+{
+  const std::vector<Quad> quads = MakeQuads(24);
+  auto mesh = MakeMesh(quads);
+  bench.Mapper->SetInputData(mesh);
+  for (const Scene& s : Scenes())
+  {
+    const double worst = bench.Run(s, quads, 24, false);
+    std::cout << "per vertex, 24 sectors, " << (s.Positional ? "sphere light R=" : "sun r=")
+              << s.Radius << ", sky " << s.Sky << ": max |GPU - CPU| = " << worst << "/255\n";
+    // 0.5 for the 8-bit rounding, 0.5 for single precision.
+    Check(
+      worst <= 1.0, "Horizon pixels per vertex differ from vtkHorizonLighting (/255)", worst, 1.0);
+  }
+  Check(!bench.Observer->GetWarning(), "good horizons shade without a warning");
+  bench.Observer->Clear();
+
+  // Bad horizons, then none: one warning each, and the exact cap.
+  vtkDataArray* horizons = mesh->GetPointData()->GetArray("HorizonAngles");
+  horizons->SetComponent(7, 3, std::numeric_limits<double>::quiet_NaN());
+  horizons->Modified();
+  const Scene s = Scenes()[1];
+  double worst = bench.Run(s, quads, 24, true);
+  Check(worst <= 1.0, "NaN horizons give the exact cap (/255)", worst, 1.0);
+  Check(bench.Observer->GetWarningMessage().find("not angles") != std::string::npos,
+    "NaN horizons warn");
+  bench.Observer->Clear();
+  bench.Run(s, quads, 24, true);
+  Check(!bench.Observer->GetWarning(), "a persisting problem warns once");
+  mesh->GetPointData()->RemoveArray("HorizonAngles");
+  worst = bench.Run(s, quads, 24, true);
+  Check(worst <= 1.0, "missing horizons give the exact cap (/255)", worst, 1.0);
+  Check(bench.Observer->GetWarningMessage().find("ComputeHorizonAngles") != std::string::npos,
+    "missing horizons warn");
+  bench.Observer->Clear();
+}
+
+// The aperture image holds one set of 48 horizons everywhere, so that texel filtering leaves
+// them as they are; each quad keeps its own normal.
+void TestPerTexel(Bench& bench)
+{
+  std::vector<Quad> quads = MakeQuads(48);
+  for (Quad& q : quads)
+  {
+    q.Horizons = quads[0].Horizons;
+  }
+  bench.Mapper->SetInputData(MakeMesh(quads));
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(4, 4, 1);
+  image->SetOrigin(-0.5 * Side, -0.5 * Side, 0.0);
+  image->SetSpacing(Side / 3.0, Side / 3.0, 1.0);
+  vtkNew<vtkFloatArray> bent, radius, horizons;
+  bent->SetName("BentNormal");
+  bent->SetNumberOfComponents(3);
+  radius->SetName("ApertureRadius");
+  horizons->SetName("HorizonAngles");
+  horizons->SetNumberOfComponents(48);
+  std::vector<double> h(quads[0].Horizons.begin(), quads[0].Horizons.end());
+  for (int t = 0; t < 16; ++t)
+  {
+    bent->InsertNextTuple3(0.0, 0.0, 1.0);
+    radius->InsertNextValue(1.0);
+    horizons->InsertNextTuple(h.data());
+  }
+  image->GetPointData()->AddArray(bent);
+  image->GetPointData()->AddArray(radius);
+  image->GetPointData()->AddArray(horizons);
+  bench.Mapper->SetApertureImage(image);
+  for (const Scene& s : Scenes())
+  {
+    const double worst = bench.Run(s, quads, 32, false);
+    std::cout << "per texel, 48 sectors as 32, " << (s.Positional ? "sphere light R=" : "sun r=")
+              << s.Radius << ", sky " << s.Sky << ": max |GPU - CPU| = " << worst << "/255\n";
+    Check(
+      worst <= 1.0, "Horizon pixels per texel differ from vtkHorizonLighting (/255)", worst, 1.0);
+  }
+  Check(!bench.Observer->GetWarning(), "good horizons in an image shade without a warning");
+  bench.Mapper->SetApertureImage(nullptr);
+}
+}
+
+int TestApertureLightingMapperHorizons(int, char*[])
+{
+  Bench bench;
+  TestPerVertex(bench);
+  TestPerTexel(bench);
+  return vtkApertureTest::Result();
+}
