@@ -22,6 +22,9 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
+#include <algorithm>
+#include <vector>
+
 vtkStandardNewMacro(vtkCompositeApertureLightingMapperHelper);
 
 namespace
@@ -57,15 +60,21 @@ void vtkCompositeApertureLightingMapperHelper::SetLighting(vtkApertureLightingIn
 //------------------------------------------------------------------------------
 void vtkCompositeApertureLightingMapperHelper::RenderPiece(vtkRenderer* renderer, vtkActor* actor)
 {
-  // Shade with apertures when the model asks for them and at least one block has them.
+  // Shade with apertures when the model asks for them and at least one block has them; with
+  // horizons, the most sectors of any block's (the others' are resampled, or open).
   this->Apertures = false;
+  this->HorizonSectors = 0;
   if (this->Lighting && this->Lighting->GetShadingMode() != vtkApertureLightingInterface::STANDARD)
   {
+    const bool horizons = this->Lighting->GetShadingMode() == vtkApertureLightingInterface::HORIZON;
     for (const auto& block : this->Data)
     {
       this->Apertures = this->Apertures || this->Lighting->CheckApertures(block.first);
+      this->HorizonSectors =
+        horizons ? std::max(this->HorizonSectors, this->Lighting->CheckHorizons(block.first)) : 0;
     }
   }
+  this->HorizonSectors = this->Apertures ? this->HorizonSectors : 0;
   this->Superclass::RenderPiece(renderer, actor);
 }
 
@@ -74,7 +83,7 @@ bool vtkCompositeApertureLightingMapperHelper::GetNeedToRebuildBufferObjects(
   vtkRenderer* renderer, vtkActor* actor)
 {
   return this->Superclass::GetNeedToRebuildBufferObjects(renderer, actor) ||
-    this->Apertures != this->BuffersHaveApertures;
+    this->Apertures != this->BuffersHaveApertures || this->HorizonSectors != this->BufferSectors;
 }
 
 //------------------------------------------------------------------------------
@@ -82,6 +91,7 @@ void vtkCompositeApertureLightingMapperHelper::BuildBufferObjects(
   vtkRenderer* renderer, vtkActor* actor)
 {
   this->BuffersHaveApertures = this->Apertures;
+  this->BufferSectors = this->HorizonSectors;
   this->Superclass::BuildBufferObjects(renderer, actor);
 }
 
@@ -118,6 +128,17 @@ void vtkCompositeApertureLightingMapperHelper::AppendOneBufferObject(vtkRenderer
   // The group keeps a reference to what it appends.
   this->VBOs->AppendDataArray("bentNormalMC", bent, VTK_FLOAT);
   this->VBOs->AppendDataArray("apertureRadiusMC", radius, VTK_FLOAT);
+  if (this->BufferSectors > 0)
+  {
+    std::vector<vtkSmartPointer<vtkFloatArray>> horizons;
+    this->Lighting->PackHorizonAttributes(block, this->BufferSectors, horizons);
+    for (size_t i = 0; i < horizons.size(); ++i)
+    {
+      this->VBOs->AppendDataArray(
+        vtkApertureLightingInterface::GetHorizonAttributeName(static_cast<int>(i)).c_str(),
+        horizons[i], VTK_FLOAT);
+    }
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -125,9 +146,10 @@ bool vtkCompositeApertureLightingMapperHelper::GetNeedToRebuildShaders(
   vtkOpenGLHelper& cellBO, vtkRenderer* renderer, vtkActor* actor)
 {
   const bool rebuild = this->Superclass::GetNeedToRebuildShaders(cellBO, renderer, actor);
-  bool& last = this->ShaderState[&cellBO];
-  const bool changed = last != this->Apertures;
-  last = this->Apertures;
+  int& last = this->ShaderState[&cellBO];
+  const int state = (this->Apertures ? 1 : 0) | (this->HorizonSectors << 1);
+  const bool changed = last != state;
+  last = state;
   return rebuild || changed ||
     (this->Lighting && cellBO.ShaderSourceTime < this->Lighting->GetShaderMTime());
 }
@@ -138,8 +160,8 @@ void vtkCompositeApertureLightingMapperHelper::ReplaceShaderLight(
 {
   const auto& info = this->PrimitiveInfo[this->LastBoundBO];
   if (!this->Apertures || this->DrawingTubesOrSpheres(*this->LastBoundBO, actor) ||
-    !this->Lighting->ReplaceShaderLight(
-      shaders, actor, renderer, info.LastLightComplexity, info.LastLightCount, false, false))
+    !this->Lighting->ReplaceShaderLight(shaders, actor, renderer, info.LastLightComplexity,
+      info.LastLightCount, false, false, this->HorizonSectors))
   {
     this->Superclass::ReplaceShaderLight(shaders, renderer, actor);
   }
@@ -173,4 +195,5 @@ void vtkCompositeApertureLightingMapperHelper::PrintSelf(ostream& os, vtkIndent 
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Apertures: " << this->Apertures << "\n";
+  os << indent << "HorizonSectors: " << this->HorizonSectors << "\n";
 }

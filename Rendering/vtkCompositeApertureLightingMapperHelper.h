@@ -66,10 +66,13 @@ private:
   void operator=(const vtkCompositeApertureLightingMapperHelper&) = delete;
 
   vtkSmartPointer<vtkApertureLightingInterface> Lighting;
-  // Whether the vertex buffers hold aperture arrays, and whether this render shades with them.
+  // Whether the vertex buffers hold aperture arrays, and whether this render shades with them;
+  // the same for horizons (their sector count, 0 for none).
   bool BuffersHaveApertures = false;
   bool Apertures = false;
-  std::map<const vtkOpenGLHelper*, bool> ShaderState;
+  int BufferSectors = 0;
+  int HorizonSectors = 0;
+  std::map<const vtkOpenGLHelper*, int> ShaderState;
 };
 
 #endif

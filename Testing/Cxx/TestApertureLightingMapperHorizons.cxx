@@ -12,11 +12,13 @@
 // model's +z toward the camera is "up"), each with its own normal and horizons, lit by suns of
 // several sizes low over the horizons, by a sphere light and by the sky. Every tested pixel must
 // match vtkHorizonLighting on the 8-bit horizons within 1/255, per vertex (24 sectors, in vertex
-// attributes) and per texel (48 sectors, resampled to 32 in a texture array); data without
-// horizons, or with bad ones, warn once and get the exact cap.
+// attributes, through vtkApertureLightingMapper and through vtkCompositeApertureLightingMapper
+// with the quads in two blocks) and per texel (48 sectors, resampled to 32 in a texture array);
+// data without horizons, or with bad ones, warn once and get the exact cap.
 
 #include "vtkApertureLightingMapper.h"
 #include "vtkApertureTestHarness.h"
+#include "vtkCompositeApertureLightingMapper.h"
 #include "vtkHorizonLighting.h"
 #include "vtkSphericalCap.h"
 
@@ -28,6 +30,7 @@
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
+#include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -307,6 +310,44 @@ void TestPerVertex(Bench& bench)
   bench.Observer->Clear();
 }
 
+// The same quads in two blocks through the composite mapper.
+void TestComposite(Bench& bench)
+{
+  const std::vector<Quad> quads = MakeQuads(24);
+  auto mesh = MakeMesh(quads);
+  vtkNew<vtkPolyData> low, high;
+  for (vtkPolyData* half : { low.Get(), high.Get() })
+  {
+    half->ShallowCopy(mesh);
+    vtkNew<vtkCellArray> cells;
+    const vtkIdType first = half == low ? 0 : Grid * Grid / 2;
+    const vtkIdType last = half == low ? Grid * Grid / 2 : Grid * Grid;
+    for (vtkIdType c = first; c < last; ++c)
+    {
+      const vtkIdType quad[4] = { 4 * c, 4 * c + 1, 4 * c + 2, 4 * c + 3 };
+      cells->InsertNextCell(4, quad);
+    }
+    half->SetPolys(cells);
+  }
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetBlock(0, low);
+  blocks->SetBlock(1, high);
+  vtkNew<vtkCompositeApertureLightingMapper> composite;
+  composite->SetInputDataObject(blocks);
+  composite->ScalarVisibilityOff();
+  composite->GetApertureLighting()->SetShadingModeToHorizon();
+  bench.Actor->SetMapper(composite);
+  for (const Scene& s : Scenes())
+  {
+    composite->GetApertureLighting()->SetSkyIntensity(s.Sky);
+    const double worst = bench.Run(s, quads, 24, false);
+    std::cout << "composite, two blocks: max |GPU - CPU| = " << worst << "/255\n";
+    Check(worst <= 1.0, "Horizon pixels of the composite mapper differ (/255)", worst, 1.0);
+  }
+  Check(!bench.Observer->GetWarning(), "the composite mapper shades without a warning");
+  bench.Actor->SetMapper(bench.Mapper);
+}
+
 // The aperture image holds one set of 48 horizons everywhere, so that texel filtering leaves
 // them as they are; each quad keeps its own normal.
 void TestPerTexel(Bench& bench)
@@ -355,6 +396,7 @@ int TestApertureLightingMapperHorizons(int, char*[])
 {
   Bench bench;
   TestPerVertex(bench);
+  TestComposite(bench);
   TestPerTexel(bench);
   return vtkApertureTest::Result();
 }
