@@ -53,6 +53,7 @@
 
 #include "vtkApertureLightingCoreModule.h" // For export macro
 #include "vtkObject.h"
+#include "vtkWrappingHints.h" // For VTK_WRAPEXCLUDE
 
 #include <string> // For std::string
 
@@ -76,7 +77,7 @@ public:
   /**
    * The horizon at an azimuth, linear between sector middles (around the circle).
    */
-  static double HorizonAt(const float* horizons, int sectors, double azimuth) VTK_WRAPEXCLUDE;
+  VTK_WRAPEXCLUDE static double HorizonAt(const float* horizons, int sectors, double azimuth);
 
   /**
    * Azimuth samples of LightTransfer() for a light whose cap spans an interval of azimuths, and
@@ -96,15 +97,14 @@ public:
    * returns the solid angle of the light above the horizons (coverage, which dims the specular
    * highlight) and the light's ∫ max(0, n·ω) dω there (cosineCoverage), which the sky loses.
    */
-  static double LightTransfer(const double n[3], const float* horizons, int sectors,
-    const double l[3], double rl, double* coverage = nullptr,
-    double* cosineCoverage = nullptr) VTK_WRAPEXCLUDE;
+  VTK_WRAPEXCLUDE static double LightTransfer(const double n[3], const float* horizons, int sectors,
+    const double l[3], double rl, double* coverage = nullptr, double* cosineCoverage = nullptr);
 
   /**
    * The sky through the open wedges, less the lights' coverage (their sums over the lights).
    */
-  static double SkyTransfer(const double n[3], const float* horizons, int sectors, double coverage,
-    double cosineCoverage, bool cosineWeighted) VTK_WRAPEXCLUDE;
+  VTK_WRAPEXCLUDE static double SkyTransfer(const double n[3], const float* horizons, int sectors,
+    double coverage, double cosineCoverage, bool cosineWeighted);
 
   ///@{
   /**
