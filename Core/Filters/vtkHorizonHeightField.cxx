@@ -27,7 +27,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <locale>
 #include <new>
+#include <sstream>
 #include <vector>
 
 namespace
@@ -225,6 +228,16 @@ bool MakeGrid(vtkImageData* image, vtkDataArray* heights, const int extent[6], c
   return true;
 }
 
+// A sector's component name: "Az" and the azimuth of its middle in degrees, counter-clockwise
+// from the grid's i axis (east on a north-up DEM), as GeoTIFF band names show it.
+std::string SectorName(int k, int sectors)
+{
+  std::ostringstream name;
+  name.imbue(std::locale::classic());
+  name << "Az" << std::setprecision(6) << 360.0 * (k + 0.5) / sectors;
+  return name.str();
+}
+
 // The output arrays of Compute(), allocated, filled through Buffers() and added to the output.
 struct Results
 {
@@ -240,6 +253,10 @@ struct Results
       settings.AmbientOcclusion ? NewArray(settings.OcclusionName, 1, texels) : nullptr;
     this->Horizons =
       settings.Horizons ? NewArray(settings.HorizonName, settings.Sectors, texels) : nullptr;
+    for (int k = 0; this->Horizons && k < settings.Sectors; ++k)
+    {
+      this->Horizons->SetComponentName(k, SectorName(k, settings.Sectors).c_str());
+    }
     this->Mask->SetName(vtkApertureValidMask::Name());
     if (!this->Bent || !this->Radius || !this->Normals ||
       (settings.AmbientOcclusion && !this->Occlusion) || (settings.Horizons && !this->Horizons) ||

@@ -45,7 +45,10 @@ const char* const Usage = R"(usage: aperture-precompute DEM -o OUTPUT.tif [optio
 Computes the visibility caps (bent normal, aperture radius, ambient occlusion) of every texel of
 a single-band DEM (GeoTIFF, or any raster GDAL reads) by horizon sweeps and writes them as a
 Float32 GeoTIFF with the DEM's georeferencing: bands BentNormal_X/_Y/_Z, ApertureRadius,
-AmbientOcclusion. No-data texels are NaN.
+AmbientOcclusion, and with --horizons one band per sector, HorizonAngles_Az<azimuth>: the
+horizon's elevation in radians above the horizontal plane, -pi/2 where nothing is in range,
+along the sector's middle azimuth in degrees counter-clockwise from east (the DEM's columns).
+No-data texels are NaN.
 
 options:
   -o, --output FILE      the GeoTIFF to write (required)
@@ -55,6 +58,7 @@ options:
   --sectors D            azimuth sectors, 4 to 1024 (default 32)
   --tile-size N          tiles of N x N texels with --max-distance (default 5120)
   --vertical-scale S     factor from the DEM's height unit to metres (default 1; 0.3048: feet)
+  --horizons             also write each sector's horizon (D bands more)
   --compress             DEFLATE-compress the output
   -q, --quiet            no progress bar or summary
   -h, --help             this text
@@ -71,7 +75,7 @@ struct Options
   int Sectors = 32;
   int TileSize = 5120;
   double VerticalScale = 1.0;
-  bool Compress = false, Quiet = false;
+  bool Compress = false, Quiet = false, Horizons = false;
 };
 
 bool Fail(const std::string& message, int& status, int code)
@@ -143,9 +147,9 @@ bool Parse(const std::vector<std::string>& args, Options& o, int& status)
       }
       (sectors ? o.Sectors : o.TileSize) = static_cast<int>(v);
     }
-    else if (a == "--compress" || a == "-q" || a == "--quiet")
+    else if (a == "--compress" || a == "-q" || a == "--quiet" || a == "--horizons")
     {
-      (a == "--compress" ? o.Compress : o.Quiet) = true;
+      (a == "--compress" ? o.Compress : a == "--horizons" ? o.Horizons : o.Quiet) = true;
     }
     else if (!a.empty() && a[0] == '-')
     {
@@ -192,6 +196,7 @@ int main(int argc, char* argv[])
   filter->SetMethodToHorizons();
   filter->SetNumberOfSectors(o.Sectors);
   filter->ComputeAmbientOcclusionOn();
+  filter->SetComputeHorizonAngles(o.Horizons);
   if (o.MaximumDistance > 0.0)
   {
     filter->LimitDistanceOn();

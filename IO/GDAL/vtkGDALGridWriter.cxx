@@ -271,7 +271,7 @@ bool vtkGDALGridWriter::ChooseArrays(vtkImageData* image, std::vector<std::strin
   names = this->ArrayNames;
   if (names.empty())
   {
-    for (const char* name : { "BentNormal", "ApertureRadius", "AmbientOcclusion" })
+    for (const char* name : { "BentNormal", "ApertureRadius", "AmbientOcclusion", "HorizonAngles" })
     {
       if (pd->GetArray(name))
       {
@@ -370,10 +370,16 @@ bool vtkGDALGridWriter::CreateFile(
   static const char* const axes[] = { "_X", "_Y", "_Z" };
   for (const auto& name : arrays)
   {
-    const int components = image->GetPointData()->GetArray(name.c_str())->GetNumberOfComponents();
+    vtkDataArray* array = image->GetPointData()->GetArray(name.c_str());
+    const int components = array->GetNumberOfComponents();
     for (int c = 0; c < components; ++c)
     {
-      bands.push_back(components == 1 ? name : name + (c < 3 ? axes[c] : "_" + std::to_string(c)));
+      const char* given = array->GetComponentName(c);
+      bands.push_back(components == 1 ? name
+                                      : name +
+            (given      ? "_" + std::string(given)
+                : c < 3 ? axes[c]
+                        : "_" + std::to_string(c)));
     }
   }
   std::string error;

@@ -13,9 +13,10 @@
  * @brief   writes point arrays of a 2D image as a georeferenced GeoTIFF, a tile at a time
  *
  * Each component of each chosen point array becomes one Float32 band, named after the array
- * (`ApertureRadius`; `BentNormal_X`, `_Y`, `_Z` for vectors). By default the arrays are those
- * vtkAperturePrecompute writes (BentNormal, ApertureRadius, AmbientOcclusion) that the input has,
- * or else its scalars; AddArrayName() chooses others.
+ * (`ApertureRadius`; `BentNormal_X`, `_Y`, `_Z` for vectors; the array's component names where it
+ * has them, as the horizons' `HorizonAngles_Az5.625`, ... do). By default the arrays are those
+ * vtkAperturePrecompute writes (BentNormal, ApertureRadius, AmbientOcclusion, HorizonAngles) that
+ * the input has, or else its scalars; AddArrayName() chooses others.
  *
  * **Georeferencing.** When the input carries vtkGDALDEMReader's field data (`GeoOrigin`,
  * `GeoSpacing`, `SpatialReference`), the file gets the DEM's CRS and a geotransform that puts every

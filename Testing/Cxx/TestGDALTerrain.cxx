@@ -514,6 +514,59 @@ void TestTiledRoundTrip()
   Check(!std::ifstream(Directory + "/missing-array.tif"), "writer: no partial file is left");
 }
 
+// Horizons kept by the filter become one band per sector, named by azimuth, equal to the array
+// whether the file is written in tiles or not.
+void TestHorizonBands()
+{
+  FileSpec spec;
+  spec.Nx = 60;
+  spec.Ny = 50;
+  const std::string dem = WriteDEM("horizon-bands.tif", spec);
+  vtkNew<vtkGDALDEMReader> reader;
+  reader->SetFileName(dem.c_str());
+  vtkNew<vtkAperturePrecompute> filter;
+  filter->SetInputConnection(reader->GetOutputPort());
+  filter->LimitDistanceOn();
+  filter->SetMaximumDistance(150.0);
+  filter->SetNumberOfSectors(8);
+  filter->ComputeHorizonAnglesOn();
+  filter->Update();
+  vtkSmartPointer<vtkImageData> reference = vtkSmartPointer<vtkImageData>::New();
+  reference->DeepCopy(filter->GetImageDataOutput());
+  vtkNew<vtkGDALGridWriter> writer;
+  writer->SetInputConnection(filter->GetOutputPort());
+  writer->SetTileRows(16);
+  writer->SetTileColumns(25);
+  const std::string out = Directory + "/horizon-bands-out.tif";
+  writer->SetFileName(out.c_str());
+  Check(writer->Write() == 1, "horizon bands: written");
+  GDALDatasetH ds = GDALOpen(out.c_str(), GA_ReadOnly);
+  Check(ds && GDALGetRasterCount(ds) == 12, "horizon bands: 4 aperture bands and 8 horizons");
+  if (ds)
+  {
+    Check(std::string(GDALGetDescription(GDALGetRasterBand(ds, 5))) == "HorizonAngles_Az22.5" &&
+        std::string(GDALGetDescription(GDALGetRasterBand(ds, 12))) == "HorizonAngles_Az337.5",
+      "horizon bands: named by the azimuth of their sector's middle");
+    GDALClose(ds);
+  }
+  vtkDataArray* horizons = reference->GetPointData()->GetArray("HorizonAngles");
+  vtkDataArray* mask = reference->GetPointData()->GetArray("vtkValidPointMask");
+  double worst = 0.0;
+  int wrong = 0;
+  for (int k = 0; horizons && k < 8; ++k)
+  {
+    const auto values = ReadBand(out, 5 + k, spec.Nx, spec.Ny);
+    for (vtkIdType t = 0; t < static_cast<vtkIdType>(values.size()); ++t)
+    {
+      const bool valid = !mask || mask->GetComponent(t, 0) != 0.0;
+      wrong += valid == std::isnan(values[t]);
+      worst = valid ? std::max(worst, std::abs(values[t] - horizons->GetComponent(t, k))) : worst;
+    }
+  }
+  Check(horizons && wrong == 0, "horizon bands: NaN exactly at no-data texels", wrong, 0);
+  Check(worst <= 1e-6, "horizon bands: tiled file == untiled filter", worst, 1e-6);
+}
+
 // A DEM of one row: an error from the filter; every texel no-data: closed apertures and a warning.
 void TestDegenerate()
 {
@@ -611,6 +664,7 @@ int TestGDALTerrain(int argc, char* argv[])
   TestLambertOnGrads();
   TestBadFiles();
   TestTiledRoundTrip();
+  TestHorizonBands();
   TestWriterBlockRows();
   TestDegenerate();
   return vtkApertureTest::Result();

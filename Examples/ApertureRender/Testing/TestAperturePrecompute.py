@@ -109,6 +109,21 @@ check(result.returncode == 0 and unlimited and
       [b.get("checksum") for b in unlimited["bands"]] == whole_sums,
       "--max-distance none: the bands of the run without a limit")
 
+# --horizons: one band per sector after the apertures, named by azimuth, in [-pi/2, pi/2]; the
+# other bands unchanged.
+result = run(dem, "-o", path("horizons.tif"), "--sectors", "16", "--horizons", "--quiet")
+horizons = gdalinfo(path("horizons.tif"), "-stats", "-checksum")
+check(result.returncode == 0 and horizons is not None, "--horizons: exit 0")
+if horizons:
+    names = [b.get("description") for b in horizons["bands"]]
+    check(names[5:] == [f"HorizonAngles_Az{22.5 * (k + 0.5):g}" for k in range(16)],
+          "--horizons: bands HorizonAngles_Az11.25 ... Az348.75: " + str(names[5:]))
+    check([b.get("checksum") for b in horizons["bands"][:5]] == whole_sums,
+          "--horizons leaves the aperture bands as they were")
+    check(all(-math.pi / 2 - 1e-3 <= b["minimum"] and b["maximum"] <= math.pi / 2 + 1e-3
+              for b in horizons["bands"][5:]),  # gdalinfo prints 3 decimals
+          "--horizons: angles within [-pi/2, pi/2]")
+
 # Progress and summary on a normal run.
 result = run(dem, "-o", path("summary.tif"), "--sectors", "8")
 check(result.returncode == 0 and "128 x 128 texels" in result.stdout and "spacing 120" in
