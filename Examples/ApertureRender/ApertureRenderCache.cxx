@@ -85,6 +85,7 @@ std::string Fingerprint(const Input& input, const Options& options)
   hash.Add(std::string("aperture-render " APERTURE_RENDER_VERSION));
   hash.Add(static_cast<double>(options.Rays));
   hash.Add(static_cast<double>(options.RaysGiven ? -1 : options.Sectors));
+  hash.Add(WantsHorizons(options) && input.Heights ? 1.0 : 0.0);
   if (input.Heights)
   {
     int dims[3];

@@ -226,9 +226,10 @@ std::vector<OptionRule> SkyRules()
         return v == "auto" || ToRange(v, -64.0, 64.0, false, o.EnvironmentExposure);
       } },
     { "Lights and shading", { "--mode" }, "MODE",
-      "exact (default), smoothstep, simplified, bentnormal, standard (plain VTK lighting), or "
-      "all: one picture with a panel per mode",
-      "is not one of exact, smoothstep, simplified, bentnormal, standard, all",
+      "exact (default), smoothstep, simplified, bentnormal, standard (plain VTK lighting), "
+      "horizon (height fields: lights and sky above each texel's horizon in every sector, right "
+      "where one cap is wrong under a low sun), or all: one picture with a panel per mode",
+      "is not one of exact, smoothstep, simplified, bentnormal, standard, horizon, all",
       [](const std::string& v, Options& o)
       {
         const std::vector<std::string>& names = ModeNames();

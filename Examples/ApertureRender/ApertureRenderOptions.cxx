@@ -112,8 +112,13 @@ Options::Options()
 const std::vector<std::string>& ModeNames()
 {
   static const std::vector<std::string> names = { "exact", "smoothstep", "simplified", "bentnormal",
-    "standard" };
+    "standard", "horizon" };
   return names;
+}
+
+bool WantsHorizons(const Options& options)
+{
+  return options.Mode == "horizon" || options.Mode == "all" || options.Interactive;
 }
 
 int ParseOptions(int argc, char* argv[], Options& options, std::string& error)

@@ -80,6 +80,10 @@ struct Options
 // The shading modes by their command-line names, in vtkApertureLightingInterface's order.
 const std::vector<std::string>& ModeNames();
 
+// Whether a height field's horizons are to be kept: for the modes that can show them (horizon,
+// all, and the window's m key).
+bool WantsHorizons(const Options& options);
+
 // Parses argv into options. Returns 0 on success, otherwise the exit code (2) with one sentence
 // in `error`.
 int ParseOptions(int argc, char* argv[], Options& options, std::string& error);

@@ -26,6 +26,7 @@
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkDataSet.h"
 #include "vtkEnvironmentMap.h"
 #include "vtkExtractVOI.h"
 #include "vtkIdList.h"
@@ -65,7 +66,7 @@ namespace ApertureRender
 namespace
 {
 const char* const ModeLabels[] = { "Exact", "Smoothstep", "Simplified", "Bent normal",
-  "Standard VTK" };
+  "Standard VTK", "Horizon" };
 
 double Radians(double degrees)
 {
@@ -495,6 +496,10 @@ bool View::WritePicture(const std::string& path, MessageCapture& messages, std::
     row->SetAppendAxis(0);
     for (int mode = 0; mode < static_cast<int>(ModeNames().size()); ++mode)
     {
+      if (!this->ModeAvailable(mode))
+      {
+        continue;
+      }
       this->SetMode(mode);
       this->Label->SetInput(ModeLabels[mode]);
       row->AddInputData(this->Grab());
@@ -549,6 +554,23 @@ bool View::WriteData(const std::string& path, MessageCapture& messages, std::str
     return false;
   }
   return true;
+}
+
+bool View::ModeAvailable(int mode) const
+{
+  auto* data = vtkDataSet::SafeDownCast(this->Apertures);
+  return mode != vtkApertureLightingInterface::HORIZON ||
+    (data && data->GetPointData()->GetArray("HorizonAngles"));
+}
+
+int View::NextMode(int mode) const
+{
+  const int count = static_cast<int>(ModeNames().size());
+  do
+  {
+    mode = (mode + 1) % count;
+  } while (!this->ModeAvailable(mode));
+  return mode;
 }
 
 void View::SetMode(int mode)
@@ -627,7 +649,7 @@ void View::OnKey(vtkObject* caller, unsigned long, void* clientData, void*)
   }
   else if (key == "m")
   {
-    view->SetMode((view->Mode + 1) % static_cast<int>(ModeNames().size()));
+    view->SetMode(view->NextMode(view->Mode));
   }
   else if (key == "a")
   {

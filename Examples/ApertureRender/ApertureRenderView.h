@@ -82,6 +82,9 @@ private:
   void AddLights();
   void PlaceCamera();
   void SetMode(int mode);
+  // The modes this data can show: Horizon only where the apertures hold horizons.
+  bool ModeAvailable(int mode) const;
+  int NextMode(int mode) const;
   void ShowApertureData(bool show);
   void UpdateStatus();
   vtkSmartPointer<vtkImageData> Grab();

@@ -162,7 +162,8 @@ int ReadInput(const ApertureRender::Options& options, ApertureRender::MessageCap
 }
 
 // The apertures cast (rays for meshes, horizon sweeps for height fields unless --rays), with a
-// progress bar; null with the reason in `error` when the filter fails.
+// progress bar; null with the reason in `error` when the filter fails. Horizons are kept only
+// for the modes that show them (4 bytes a sector and texel).
 vtkSmartPointer<vtkDataObject> CastApertures(const ApertureRender::Options& options,
   const ApertureRender::Input& input, ApertureRender::MessageCapture& messages, std::string& error)
 {
@@ -187,6 +188,7 @@ vtkSmartPointer<vtkDataObject> CastApertures(const ApertureRender::Options& opti
   precompute->SetFeatureAngle(options.Crease);
   precompute->SetMaximumEdgeLength(input.MaximumEdge);
   precompute->ComputeAmbientOcclusionOn();
+  precompute->SetComputeHorizonAngles(!rays && ApertureRender::WantsHorizons(options));
   messages.Clear();
   const auto start = std::chrono::steady_clock::now();
   {
@@ -264,6 +266,11 @@ int Show(const ApertureRender::Options& options, const ApertureRender::Input& in
     if (!view.WritePicture(options.Output, messages, error))
     {
       return Fail(error, 1);
+    }
+    // What the mappers fell back on (a mode without its arrays), once each.
+    for (const std::string& warning : messages.Warnings())
+    {
+      Say("note: " + vtkApertureText::Line(warning));
     }
     Say("wrote " + vtksys::SystemTools::CollapseFullPath(options.Output));
   }

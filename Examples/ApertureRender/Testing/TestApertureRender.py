@@ -216,6 +216,24 @@ expect_picture("sphere light and two suns",
                [bunny, *FAST, "--sphere-light", "0,0.2,0.1,0.03,2", "--sun", "200,30",
                 "--sun", "120,60,2", "--mode", "smoothstep"])
 expect_picture("every mode", [path("bunny.vtp"), *FAST, "--mode", "all"], 1000, 150)
+# A height field adds the Horizon panel; under a low sun it differs from the exact cap's. A mesh
+# asked for horizons warns once and shows the exact cap.
+expect_picture("every mode of a height field", [path("fuji.asc"), *NO_RAYS, "--mode", "all"],
+               1200, 150)
+low_sun = [path("fuji.asc"), *NO_RAYS, "--sun", "250,8", "--sky", "0,0,0"]
+expect_picture("horizon", [*low_sun, "--mode", "horizon"])
+expect_picture("exact", [*low_sun, "--mode", "exact"])
+changed = np.abs(read_png(path("horizon.png")).astype(float)
+                 - read_png(path("exact.png")).astype(float)).max(axis=2) > 8
+check(changed.mean() > 0.01, f"a low sun: Horizon differs from the exact cap on {changed.mean():.1%} "
+      "of the picture")
+result = run(path("bunny.vtp"), *FAST, "--mode", "horizon", "-o", path("mesh-horizon.png"))
+run(path("bunny.vtp"), *FAST, "--mode", "exact", "-o", path("mesh-exact.png"))
+said = result.stdout + result.stderr
+check(result.returncode == 0 and said.count("Cannot shade with horizons") == 1 and "exact cap" in said and
+      os.path.exists(path("mesh-horizon.png")) and
+      (read_png(path("mesh-horizon.png")) == read_png(path("mesh-exact.png"))).all(),
+      "a mesh in Horizon mode: one warning, the exact cap's picture " + repr(said[-300:]))
 expect_picture("aperture colours", [path("fuji.dem"), *FAST, "--show", "apertures"])
 
 # The cache: computed, then read; other settings recompute it.
