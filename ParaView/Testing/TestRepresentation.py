@@ -45,6 +45,34 @@ def shot(view, work, name):
     return read_png(path)
 
 
+def check_terrain_horizons(work):
+    """A wavelet height field with its horizons, warped up: Horizon differs from Exact."""
+    grid = pvs.Wavelet(WholeExtent=[0, 63, 0, 63, 0, 0])
+    terrain = pvs.AperturePrecompute(Input=grid, HeightScale=0.2, ComputeHorizonAngles=1)
+    warp = pvs.WarpByScalar(Input=terrain, Scalars=["POINTS", "RTData"], ScaleFactor=0.2,
+                            UseNormal=1, Normal=[0, 0, 1])
+    view = pvs.CreateRenderView(ViewSize=[400, 400], OrientationAxesVisibility=0,
+                                Background=[0.1, 0.1, 0.12])
+    view.UseColorPaletteForBackground = 0
+    display = pvs.Show(warp, view)
+    display.ColorArrayName = ["POINTS", ""]
+    display.SetRepresentationType("Aperture Lighting")
+    display.ApertureSkyIntensity = 0.6
+    view.CameraPosition = [31.5, -60.0, 90.0]
+    view.CameraFocalPoint = [31.5, 31.5, 20.0]
+    view.CameraViewUp = [0, 0, 1]
+    arrays = terrain.PointData.keys()
+    check("HorizonAngles" in arrays, "Compute Horizon Angles adds HorizonAngles: " + str(arrays))
+    display.ApertureShadingMode = "Exact"
+    exact = shot(view, work, "terrain-exact")
+    display.ApertureShadingMode = "Horizon"
+    horizon = shot(view, work, "terrain-horizon")
+    change = np.abs(horizon - exact).mean()
+    check(change > 1.0, f"a height field with horizons: Horizon differs from Exact by {change:.2f} "
+          "levels on average (> 1)")
+    pvs.Delete(view)
+
+
 def main(plugin, data, baseline, work):
     pvs.LoadPlugin(plugin, remote=False)
     os.makedirs(work, exist_ok=True)
@@ -106,6 +134,16 @@ def main(plugin, data, baseline, work):
     check(change > 1, f"an HDR sky environment changes the sky ({change:.1f} levels)")
     display.ApertureSkyEnvironment = ""
     display.ApertureSkyIntensity = 0.0
+
+    # Horizon: the bunny has no horizons, so the exact cap; a height field kept with them shades
+    # from them (its sky through the sectors' wedges differs from the cap's).
+    display.ApertureShadingMode = "Horizon"
+    fallback = shot(view, work, "horizon-bunny")
+    difference = np.abs(fallback - exact)[mask].mean()
+    check(difference < 0.5, f"Horizon without horizons draws the exact cap (mean |difference| "
+          f"{difference:.3f} < 0.5 level)")
+    display.ApertureShadingMode = "Exact"
+    check_terrain_horizons(work)
 
     pvs.ColorBy(display, ("POINTS", "ApertureRadius"))
     colored = shot(view, work, "colored")

@@ -3,6 +3,8 @@ Figure 7, measured).
 
     /usr/bin/python3 Utilities/Evaluation/evaluate.py [--quick] [--data Testing/Data]
                                                       [--out docs] [--check]
+                                                      [--mesh FILE [--up AXIS]] [--dem FILE]
+                                                      [--json ROWS.json]
 
 For each scene (the paper's cylinder on a plane, the Mount Fuji tile, the Stanford bunny), light
 radius (0.001, 0.064, 0.314, 0.785 rad) and light direction (elevations 60, 30 and 8 degrees:
@@ -12,7 +14,11 @@ that an unoccluded light at normal incidence gives 1, is computed by:
 - reference: vtkApertureReference, Monte-Carlo over the light's cap with Embree;
 - AAL exact (centroid Lambert), AAL exact (lens moment), smoothstep, simplified, bent normal:
   vtkSphericalCap.LightTransfer on the apertures of vtkAperturePrecompute (the mapper's shaders
-  match it within 0.5/255, TestApertureLightingMapperPixels);
+  match it within 0.5/255, TestApertureLightingMapperPixels); on height fields (the Mount Fuji
+  tile, --dem) the apertures and normals of the height-field path, the horizon sweeps;
+- horizon (height fields): vtkHorizonLighting.LightTransfer on the sweep's 32 horizons as the
+  GPU gets them (8 bits a sector; the mapper matches it within 0.5/255,
+  TestApertureLightingMapperHorizons);
 - SH PRT, order 6 (bands 0-5): visibility x cosine projected per vertex from the k = 1026
   visibility matrix, the light's cap projected analytically (Funk-Hecke);
 - visibility matrix, k = 258: (1/pi) sum_j M_ij L_j w_j with the cap's radiance split over the
@@ -23,7 +29,13 @@ percentile, both relative to the mean reference irradiance of those vertices. Wr
 evaluation.md (tables), evaluation.json and images/evaluation-montage.png under --out; --quick
 runs the cylinder scene with fewer rays (the ctest); --check exits 1 when AAL exact fails to
 beat bent normal (with the lens moment: for every r >= 0.064; with the centroid: for 0.064 <=
-r <= 0.314) or the visibility matrix is off by more than 5% for r >= 0.314 above 30 degrees.
+r <= 0.314), the visibility matrix is off by more than 5% for r >= 0.314 above 30 degrees, or
+horizon is worse than AAL exact by more than the reference noise plus one point in any cell.
+
+Any data: --mesh FILE (OBJ, PLY, STL, VTP; --up x|y|z, default z, for the light's elevations)
+and --dem FILE (any raster GDAL reads, through vtkGDALDEMReader, resampled to at most 256
+samples a side) replace the built-in scenes; --json OUT writes one row per cell and method,
+{"scene", "elevation", "radius", "method", "mean", "p95"}, errors in percent.
 """
 
 import argparse
@@ -44,7 +56,9 @@ from vtkmodules.vtkFiltersGeneral import vtkTransformPolyDataFilter, vtkWarpScal
 from vtkmodules.vtkFiltersGeometry import vtkImageDataGeometryFilter
 from vtkmodules.vtkFiltersSources import vtkCylinderSource, vtkPlaneSource
 from vtkmodules.vtkCommonTransforms import vtkTransform
-from vtkmodules.vtkIOGeometry import vtkOBJReader
+from vtkmodules.vtkIOGeometry import vtkOBJReader, vtkSTLReader
+from vtkmodules.vtkIOPLY import vtkPLYReader
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkImagingCore import vtkImageResize
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderWindow,
@@ -52,14 +66,15 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderW
 import vtkmodules.vtkRenderingFreeType  # noqa: F401  (text)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL factory)
 
-from aperturelighting import (vtkAperturePrecompute, vtkApertureReference, vtkLightSphere,
-                              vtkOcclusionQueryVisibility, vtkSphericalCap, vtkTerrainRGBReader)
+from aperturelighting import (vtkAperturePrecompute, vtkApertureReference, vtkGDALDEMReader,
+                              vtkHorizonLighting, vtkLightSphere, vtkOcclusionQueryVisibility,
+                              vtkSphericalCap, vtkTerrainRGBReader)
 
 RADII = (0.001, 0.064, 0.314, 0.785)
 ELEVATIONS = (60.0, 30.0, 8.0)
 AZIMUTH = 225.0
-METHODS = ("AAL exact", "AAL exact (moment)", "smoothstep", "simplified", "bent normal",
-           "SH PRT order 6", "visibility k=258")
+METHODS = ("AAL exact", "AAL exact (moment)", "horizon", "smoothstep", "simplified",
+           "bent normal", "SH PRT order 6", "visibility k=258")
 SHADING = {"AAL exact": (vtkSphericalCap.EXACT, vtkSphericalCap.CENTROID),
            "AAL exact (moment)": (vtkSphericalCap.EXACT, vtkSphericalCap.MOMENT),
            "smoothstep": (vtkSphericalCap.SMOOTHSTEP, vtkSphericalCap.CENTROID),
@@ -102,27 +117,53 @@ def cylinder_scene(resolution):
     both = vtkAppendPolyData()
     both.AddInputConnection(plane.GetOutputPort())
     both.AddInputConnection(moved.GetOutputPort())
-    return triangulated(both), (0.0, 0.0, 1.0)
+    return triangulated(both), (0.0, 0.0, 1.0), None
 
 
-def fuji_scene(data, side):
-    """The Mount Fuji tile as a triangulated surface (z up, 60 m samples, heights x 1.5)."""
-    reader = vtkTerrainRGBReader()
-    reader.SetFileName(os.path.join(data, "fuji-terrain-rgb.png"))
-    reader.SetSpacing(60.0, 60.0)
+def height_field_scene(reader, side, scale):
+    """A DEM resampled to side x side samples at most, as a triangulated surface (z up, heights
+    x scale) whose points are the grid's, i fastest, and as the grid itself."""
+    reader.Update()
+    dims = reader.GetOutput().GetDimensions()
     resize = vtkImageResize()
     resize.SetInputConnection(reader.GetOutputPort())
-    resize.SetOutputDimensions(side, side, 1)
+    resize.SetOutputDimensions(min(side, dims[0]), min(side, dims[1]), 1)
+    resize.Update()
+    image = vtkImageData()
+    image.DeepCopy(resize.GetOutput())
     grid = vtkImageDataGeometryFilter()
-    grid.SetInputConnection(resize.GetOutputPort())
+    grid.SetInputData(image)
     warp = vtkWarpScalar()
     warp.SetInputConnection(grid.GetOutputPort())
-    warp.SetScaleFactor(1.5)
+    warp.SetScaleFactor(scale)
     warp.UseNormalOn()
     warp.SetNormal(0, 0, 1)
     surface = triangulated(warp)
     surface.GetPointData().SetScalars(None)
-    return surface, (0.0, 0.0, 1.0)
+    return surface, (0.0, 0.0, 1.0), (image, scale)
+
+
+def fuji_scene(data, side):
+    """The Mount Fuji tile (60 m samples, heights x 1.5)."""
+    reader = vtkTerrainRGBReader()
+    reader.SetFileName(os.path.join(data, "fuji-terrain-rgb.png"))
+    reader.SetSpacing(60.0, 60.0)
+    return height_field_scene(reader, side, 1.5)
+
+
+def dem_scene(name):
+    reader = vtkGDALDEMReader()
+    reader.SetFileName(name)
+    return height_field_scene(reader, 256, 1.0)
+
+
+def mesh_scene(name, up):
+    readers = {".obj": vtkOBJReader, ".ply": vtkPLYReader, ".stl": vtkSTLReader,
+               ".vtp": vtkXMLPolyDataReader}
+    reader = readers[os.path.splitext(name)[1].lower()]()
+    reader.SetFileName(name)
+    axis = {"x": (1.0, 0.0, 0.0), "y": (0.0, 1.0, 0.0), "z": (0.0, 0.0, 1.0)}[up[-1]]
+    return triangulated(reader), tuple(-a if up.startswith("-") else a for a in axis), None
 
 
 def bunny_scene(data):
@@ -131,7 +172,7 @@ def bunny_scene(data):
     reader.Update()
     bunny = vtkPolyData()
     bunny.DeepCopy(reader.GetOutput())
-    return bunny, (0.0, 1.0, 0.0)
+    return bunny, (0.0, 1.0, 0.0), None
 
 
 def light_direction(up, elevation, azimuth=AZIMUTH):
@@ -164,17 +205,18 @@ def cap_samples(direction, radius, count=4096):
 
 
 class Scene:
-    def __init__(self, name, surface, up, rays, samples):
+    def __init__(self, name, surface, up, rays, samples, grid=None):
         self.name, self.surface, self.up, self.samples = name, surface, up, samples
         start = time.time()
-        precompute = vtkAperturePrecompute()
-        precompute.SetInputData(surface)
-        precompute.SetNumberOfRays(rays)
-        precompute.Update()
-        pd = precompute.GetOutput().GetPointData()
-        self.normals = vtk_to_numpy(pd.GetNormals()).astype(float)
-        self.bent = vtk_to_numpy(pd.GetArray("BentNormal")).astype(float)
-        self.radius = vtk_to_numpy(pd.GetArray("ApertureRadius")).astype(float)
+        self.horizons = None
+        if grid:
+            self.precompute_grid(*grid)
+        else:
+            precompute = vtkAperturePrecompute()
+            precompute.SetInputData(surface)
+            precompute.SetNumberOfRays(rays)
+            precompute.Update()
+            self.keep_caps(precompute.GetOutput().GetPointData())
         visibility = vtkOcclusionQueryVisibility()
         visibility.SetInputData(surface)
         visibility.SetBackendToRayCast()
@@ -189,6 +231,28 @@ class Scene:
         self.weights258 = np.array([level3.GetWeight(j) for j in range(258)])
         self.setup_seconds = time.time() - start
 
+    def keep_caps(self, pd):
+        self.normals = vtk_to_numpy(pd.GetNormals()).astype(float)
+        self.bent = vtk_to_numpy(pd.GetArray("BentNormal")).astype(float)
+        self.radius = vtk_to_numpy(pd.GetArray("ApertureRadius")).astype(float)
+
+    def precompute_grid(self, image, scale):
+        """The height-field path: caps and horizons from the sweeps on the grid, whose points
+        are the surface's; the surface takes the sweep's normals, so that every method and the
+        reference shade the same hemisphere."""
+        precompute = vtkAperturePrecompute()
+        precompute.SetInputData(image)
+        precompute.SetHeightScale(scale)
+        precompute.ComputeHorizonAnglesOn()
+        precompute.Update()
+        pd = precompute.GetOutput().GetPointData()
+        self.keep_caps(pd)
+        self.horizons = pd.GetArray("HorizonAngles")
+        surface = vtkPolyData()
+        surface.ShallowCopy(self.surface)
+        surface.GetPointData().SetNormals(pd.GetNormals())
+        self.surface = surface
+
     def reference(self, direction, radius):
         ref = vtkApertureReference()
         ref.SetInputData(self.surface)
@@ -201,6 +265,13 @@ class Scene:
                 vtk_to_numpy(pd.GetArray("ReferenceNoise")).astype(float))
 
     def method(self, name, direction, radius):
+        if name == "horizon":
+            if self.horizons is None:
+                return None
+            transfer = vtkHorizonLighting.LightTransfer
+            d = list(direction)
+            return np.array([transfer(self.horizons, i, n, d, radius, True)
+                             for i, n in enumerate(self.normals.tolist())])
         if name in SHADING:
             shading, lambert = SHADING[name]
             transfer = vtkSphericalCap.LightTransfer
@@ -304,6 +375,10 @@ def main():
     parser.add_argument("--out", default=os.path.join(here, "..", "..", "docs"))
     parser.add_argument("--quick", action="store_true")
     parser.add_argument("--check", action="store_true")
+    parser.add_argument("--mesh", help="a mesh of your own (OBJ, PLY, STL, VTP)")
+    parser.add_argument("--up", default="z", choices=("x", "y", "z", "-x", "-y", "-z"))
+    parser.add_argument("--dem", help="a DEM of your own (any raster GDAL reads)")
+    parser.add_argument("--json", help="rows of scene, elevation, radius, method, mean, p95")
     args = parser.parse_args()
     os.makedirs(os.path.join(args.out, "images"), exist_ok=True)
 
@@ -312,10 +387,14 @@ def main():
     if not args.quick:
         builders += [("Mount Fuji", lambda: fuji_scene(args.data, 128)),
                      ("Stanford bunny", lambda: bunny_scene(args.data))]
-    results, montage_rows, failures = [], [], []
+    if args.mesh or args.dem:
+        builders = ([(os.path.basename(args.mesh), lambda: mesh_scene(args.mesh, args.up))]
+                    if args.mesh else []) + (
+            [(os.path.basename(args.dem), lambda: dem_scene(args.dem))] if args.dem else [])
+    results, montage_rows, horizon_rows, failures = [], [], [], []
     for name, build in builders:
-        surface, up = build()
-        scene = Scene(name, surface, up, rays, samples)
+        surface, up, grid = build()
+        scene = Scene(name, surface, up, rays, samples, grid)
         print(f"{name}: {surface.GetNumberOfPoints()} points, apertures ({rays} rays) and "
               f"visibility (k = 1026) in {scene.setup_seconds:.1f} s", flush=True)
         for elevation in ELEVATIONS:
@@ -331,16 +410,26 @@ def main():
                 estimates = {}
                 for method in METHODS:
                     estimates[method] = scene.method(method, direction, radius)
+                    if estimates[method] is None:
+                        continue
                     mean, p95 = errors(estimates[method], reference, facing)
                     cell["methods"][method] = {"mean": float(mean), "p95": float(p95)}
                 results.append(cell)
                 print(f"  elevation {elevation:4.0f}, r = {radius:5.3f}: " + ", ".join(
-                    f"{m} {100 * cell['methods'][m]['mean']:.1f}%" for m in METHODS), flush=True)
+                    f"{m} {100 * e['mean']:.1f}%" for m, e in cell["methods"].items()), flush=True)
                 if elevation == 30.0 and radius == 0.064:
-                    values = [reference] + [estimates[m] for m in METHODS] + [
+                    shown = [m for m in METHODS if estimates[m] is not None]
+                    values = [reference] + [estimates[m] for m in shown] + [
                         np.abs(estimates["AAL exact"] - reference)]
-                    titles = ["reference"] + list(METHODS) + ["|AAL exact - ref|"]
+                    titles = ["reference"] + shown + ["|AAL exact - ref|"]
                     montage_rows.append(render_panels(scene, values, titles, 200))
+                if elevation == 8.0 and radius == 0.064 and scene.horizons is not None:
+                    horizon_rows.append(render_panels(
+                        scene, [reference, estimates["AAL exact"], estimates["horizon"],
+                                np.abs(estimates["AAL exact"] - reference),
+                                np.abs(estimates["horizon"] - reference)],
+                        ["reference, sun at 8 deg", "AAL exact", "horizon", "|AAL exact - ref|",
+                         "|horizon - ref|"], 240))
     # Checks: the paper's claims, as measured. With the lens moment, AAL exact beats bent normal
     # wherever the light has a size; with the centroid Lambert it does up to r = 0.314 (beyond,
     # the centroid overestimates by up to 2/(1 + cos r), see docs/evaluation.md).
@@ -355,19 +444,24 @@ def main():
                 m["visibility k=258"]["mean"] > 0.05:
             failures.append(where + ": the visibility matrix is off by "
                             f"{100 * m['visibility k=258']['mean']:.1f}%")
-    write_outputs(args, results, montage_rows, rays, samples)
+        # A mode beyond one cap is never worse than the cap beyond the reference's noise.
+        for new in ("horizon",):
+            for stat in ("mean", "p95"):
+                if new in m and m[new][stat] > m["AAL exact"][stat] + cell["noise"] + 0.01:
+                    failures.append(f"{where}: {new} {stat} {100 * m[new][stat]:.1f}% is worse "
+                                    f"than AAL exact's {100 * m['AAL exact'][stat]:.1f}%")
+    write_outputs(args, results, {"evaluation-montage": montage_rows,
+                                  "evaluation-horizon": horizon_rows}, rays, samples)
     for failure in failures:
         print("FAIL", failure)
     return 1 if args.check and failures else 0
 
 
-def write_outputs(args, results, montage_rows, rays, samples):
-    suffix = "-quick" if args.quick else ""
-    with open(os.path.join(args.out, f"evaluation{suffix}.json"), "w") as f:
-        json.dump(results, f, indent=1)
-    rows = vtkImageAppend()
-    rows.SetAppendAxis(1)
-    for row in reversed(montage_rows):
+def write_montage(rows, name):
+    """Rows of pictures, the first on top, as one PNG."""
+    column = vtkImageAppend()
+    column.SetAppendAxis(1)
+    for row in reversed(rows):
         strip = vtkImageAppend()
         strip.SetAppendAxis(0)
         for picture in row:
@@ -375,11 +469,26 @@ def write_outputs(args, results, montage_rows, rays, samples):
         strip.Update()
         image = vtkImageData()
         image.DeepCopy(strip.GetOutput())
-        rows.AddInputData(image)
+        column.AddInputData(image)
     writer = vtkPNGWriter()
-    writer.SetInputConnection(rows.GetOutputPort())
-    writer.SetFileName(os.path.join(args.out, "images", f"evaluation-montage{suffix}.png"))
+    writer.SetInputConnection(column.GetOutputPort())
+    writer.SetFileName(name)
     writer.Write()
+
+
+def write_outputs(args, results, montages, rays, samples):
+    suffix = "-quick" if args.quick else ""
+    with open(os.path.join(args.out, f"evaluation{suffix}.json"), "w") as f:
+        json.dump(results, f, indent=1)
+    if args.json:
+        rows = [{"scene": c["scene"], "elevation": c["elevation"], "radius": c["radius"],
+                 "method": m, "mean": 100 * e["mean"], "p95": 100 * e["p95"]}
+                for c in results for m, e in c["methods"].items()]
+        with open(args.json, "w") as f:
+            json.dump(rows, f, indent=1)
+    for name, rows in montages.items():
+        if rows:
+            write_montage(rows, os.path.join(args.out, "images", f"{name}{suffix}.png"))
     lines = [f"Measured with `{' '.join(['/usr/bin/python3'] + sys.argv)}` on "
              f"{platform.node() and platform.machine()} ({os.cpu_count()} cores), {rays} aperture "
              f"rays, {samples} reference samples per vertex.", ""]
@@ -390,12 +499,12 @@ def write_outputs(args, results, montage_rows, rays, samples):
                   "| elevation | r (rad) | " + " | ".join(METHODS) + " | reference noise |",
                   "|---|---|" + "---|" * len(METHODS) + "---|"]
         for c in (c for c in results if c["scene"] == scene):
-            best = min(c["methods"][m]["mean"] for m in METHODS)
+            best = min(e["mean"] for e in c["methods"].values())
             cells = []
             for m in METHODS:
-                e = c["methods"][m]
-                text = f"{100 * e['mean']:.1f} / {100 * e['p95']:.0f}"
-                cells.append(f"**{text}**" if e["mean"] == best else text)
+                e = c["methods"].get(m)
+                text = f"{100 * e['mean']:.1f} / {100 * e['p95']:.0f}" if e else "n/a"
+                cells.append(f"**{text}**" if e and e["mean"] == best else text)
             lines.append(f"| {c['elevation']:.0f}° | {c['radius']} | " + " | ".join(cells)
                          + f" | {100 * c['noise']:.2f} |")
         lines.append("")
