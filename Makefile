@@ -49,6 +49,8 @@ pictures: build
 	  --cache $(BUILD_DIR)/demo/fuji-apertures.vti
 	@$(RENDER) -o docs/images/fuji-modes.png --mode all --size 480x330 \
 	  --cache $(BUILD_DIR)/demo/fuji-apertures.vti
+	@$(RENDER) -o docs/images/fuji-low-sun.png --mode all --size 480x330 --sun 250,8 \
+	  --cache $(BUILD_DIR)/demo/fuji-apertures.vti
 	@$(RENDER) -o docs/images/fuji-apertures.png --show apertures --size 800x500 \
 	  --cache $(BUILD_DIR)/demo/fuji-apertures.vti
 	@$(RENDER) Testing/Data/stanford-bunny.obj -o docs/images/bunny-default.png --size 640x480 \

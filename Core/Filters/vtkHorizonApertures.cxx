@@ -10,6 +10,7 @@
 =========================================================================*/
 #include "vtkHorizonApertures.h"
 
+#include "vtkApertureMemory.h"
 #include "vtkSphericalCap.h"
 
 #include "vtkMath.h"
@@ -20,6 +21,7 @@
 #include <cmath>
 #include <initializer_list>
 #include <limits>
+#include <memory>
 #include <vector>
 
 namespace
@@ -685,14 +687,81 @@ void SweepSector(const Field& f, const Lines& lines, const float* normals, const
     });
 }
 
-// The per-texel deficit sums, in the output arrays until Finish() turns them into outputs.
+// The horizons of a few passes, a plane per sector, before they go to the per-texel records
+// together: writing each pass's two sectors straight into records of S floats would touch
+// every texel's cache line on every pass (1.5 times the sweep's time at 32 sectors, against
+// 1.35 with 8 planes, 32 bytes a texel besides the output, flushed every 4 passes).
+class HorizonPlanes
+{
+public:
+  static constexpr int PassesPerFlush = 4;
+
+  HorizonPlanes(float* horizons, vtkIdType texels, int sectors)
+    : Horizons(horizons)
+    , Texels(texels)
+    , NumberOfSectors(sectors)
+  {
+    if (horizons)
+    {
+      // Written before read: no need to clear them.
+      const size_t size = 2 * PassesPerFlush * static_cast<size_t>(texels);
+      this->Data.reset(new float[size]);
+      vtkApertureMemory::AdviseHugePages(this->Data.get(), sizeof(float) * size);
+    }
+  }
+
+  // Where pass `pass`'s sector k (0, or 1 for the opposite one) goes: a plane, or null.
+  float* Plane(int pass, int k)
+  {
+    return !this->Data ? nullptr : &this->Data[(2 * (pass % PassesPerFlush) + k) * this->Texels];
+  }
+
+  // Moves the buffered planes of passes [first, first + count) into the records.
+  void Flush(const Lines* lines, int count)
+  {
+    if (!this->Data)
+    {
+      return;
+    }
+    std::vector<std::pair<const float*, int>> sources; // plane, sector
+    for (int p = 0; p < count; ++p)
+    {
+      for (int k = 0; k < lines[p].Count; ++k)
+      {
+        sources.emplace_back(&this->Data[(2 * p + k) * this->Texels], lines[p].Index[k]);
+      }
+    }
+    // Texel by texel, so that each record is written once per flush.
+    vtkSMPTools::For(0, this->Texels,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType o = begin; o < end; ++o)
+        {
+          float* record = this->Horizons + o * this->NumberOfSectors;
+          for (const auto& source : sources)
+          {
+            record[source.second] = source.first[o];
+          }
+        }
+      });
+  }
+
+private:
+  float* Horizons;
+  vtkIdType Texels;
+  int NumberOfSectors;
+  std::unique_ptr<float[]> Data;
+};
+
+// The per-texel deficit sums, in the output arrays until Finish() turns them into outputs; the
+// horizons into their planes.
 class Accumulator
 {
 public:
-  Accumulator(const Lines& lines, const vtkHorizonApertures::Buffers& out, int sectors)
+  Accumulator(const Lines& lines, const vtkHorizonApertures::Buffers& out, float* planes[2])
     : L(lines)
     , Out(out)
-    , NumberOfSectors(sectors)
+    , Planes{ planes[0], planes[1] }
   {
   }
 
@@ -706,12 +775,11 @@ public:
       const Sector& sector = this->L.Sectors[k];
       const double tangent = down[0] * sector.Cos + down[1] * sector.Sin;
       const double top = std::max(slopes[k], tangent);
-      const double cosA = 1.0 / std::sqrt(1.0 + top * top);
-      Deficit(sector.Dphi, sector.Chord, FastAtan(top), top * cosA, cosA, deficit);
-      if (this->Out.Horizons)
+      const double cosA = 1.0 / std::sqrt(1.0 + top * top), a = FastAtan(top);
+      Deficit(sector.Dphi, sector.Chord, a, top * cosA, cosA, deficit);
+      if (this->Planes[k])
       {
-        this->Out.Horizons[o * this->NumberOfSectors + this->L.Index[k]] =
-          static_cast<float>(FastAtan(slopes[k]));
+        this->Planes[k][o] = static_cast<float>(slopes[k] >= tangent ? a : FastAtan(slopes[k]));
       }
     }
     this->Out.ApertureRadius[o] += static_cast<float>(deficit[0]);
@@ -724,7 +792,7 @@ public:
 private:
   const Lines& L;
   const vtkHorizonApertures::Buffers& Out;
-  const vtkIdType NumberOfSectors;
+  float* const Planes[2];
 };
 
 // The open hemisphere less the deficits: radius, bent normal, ambient occlusion; no-data texels
@@ -801,10 +869,18 @@ bool vtkHorizonApertures::Compute(const Grid& grid, const Buffers& output, std::
   // Opposite sectors share their lines: one pass gathers and scatters both.
   const bool paired = grid.Sectors % 2 == 0;
   const int passes = paired ? grid.Sectors / 2 : grid.Sectors;
+  HorizonPlanes planes(output.Horizons, texels, grid.Sectors);
+  std::vector<Lines> buffered;
   for (int pass = 0; pass < passes; ++pass)
   {
-    const Lines lines(f, grid, pass, paired);
-    SweepSector(f, lines, output.Normals, Accumulator(lines, output, grid.Sectors));
+    buffered.emplace_back(f, grid, pass, paired);
+    float* toPlanes[2] = { planes.Plane(pass, 0), planes.Plane(pass, 1) };
+    SweepSector(f, buffered.back(), output.Normals, Accumulator(buffered.back(), output, toPlanes));
+    if (buffered.size() == HorizonPlanes::PassesPerFlush || pass + 1 == passes)
+    {
+      planes.Flush(buffered.data(), static_cast<int>(buffered.size()));
+      buffered.clear();
+    }
     if (progress && !progress(double(pass + 1) / passes))
     {
       error = "The computation was aborted.";

@@ -56,7 +56,9 @@
  * the samples and adds to the texels for both, sweeping each line both ways. Each texel is
  * written by one line per pass and passes are summed in order, so that results do not depend
  * on threads. Per-texel sums live in the output arrays until the last pass (33 bytes per
- * output texel in all, besides the input and the threads' buffers of a group of lines).
+ * output texel in all, besides the input and the threads' buffers of a group of lines). Kept
+ * horizons (Buffers::Horizons, 4 bytes a sector) go first to planes of 8 sectors (32 bytes a
+ * texel more), which fill the per-texel records together every 4 passes.
  *
  * Normals are those of the triangulated surface vtkAperturePrecompute's rays see (cells split
  * as (i,j)(i+1,j)(i+1,j+1) and (i,j)(i+1,j+1)(i,j+1)): the normalised sum of the unit normals of

@@ -10,6 +10,7 @@
 =========================================================================*/
 #include "vtkHorizonHeightField.h"
 
+#include "vtkApertureMemory.h"
 #include "vtkApertureValidMask.h"
 #include "vtkHorizonApertures.h"
 
@@ -46,6 +47,7 @@ vtkSmartPointer<vtkFloatArray> NewArray(const char* name, int components, vtkIdT
     return nullptr;
   }
   array->SetNumberOfTuples(tuples);
+  vtkApertureMemory::AdviseHugePages(array->GetPointer(0), sizeof(float) * components * tuples);
   return array;
 }
 
