@@ -50,24 +50,37 @@ double TangentElevation(const double n[3], double c, double s)
 }
 
 // What one azimuth of a light cap adds: the cap's elevations there [eLow, eHigh] above the
-// horizon h, in solid angle and in ∫ n·ω (above the tangent plane too), times the weight w.
+// horizon h and the tangent plane, in solid angle and in ∫ n·ω, times the weight w.
 void AddMeridian(
   const double n[3], double phi, double eLow, double eHigh, double h, double w, double sums[2])
 {
   const double c = std::cos(phi), s = std::sin(phi);
-  const double seen = std::max(eLow, h);
-  if (eHigh > seen)
-  {
-    sums[0] += w * 2.0 * std::cos(0.5 * (eHigh + seen)) * std::sin(0.5 * (eHigh - seen));
-  }
-  const double lit = std::max(seen, TangentElevation(n, c, s));
+  const double lit = std::max(std::max(eLow, h), TangentElevation(n, c, s));
   if (eHigh > lit)
   {
-    // ∫ cos²e de and ∫ sin e cos e de over [lit, eHigh], in forms that keep tiny intervals.
+    // ∫ cos e, ∫ cos²e and ∫ sin e cos e over [lit, eHigh], in forms that keep tiny intervals.
     const double width = eHigh - lit, sinWidth = std::sin(width);
     const double horizontal = 0.5 * width + 0.5 * std::cos(eHigh + lit) * sinWidth;
     const double vertical = 0.5 * std::sin(eHigh + lit) * sinWidth;
+    sums[0] += w * 2.0 * std::cos(0.5 * (eHigh + lit)) * std::sin(0.5 * width);
     sums[1] += w * ((n[0] * c + n[1] * s) * horizontal + n[2] * vertical);
+  }
+}
+
+// The lowest and highest horizon that HorizonAt() takes over azimuths [phi0, phi1]: those of the
+// sectors whose middles bracket them.
+void HorizonRange(const float* horizons, int sectors, double phi0, double phi1, double range[2])
+{
+  const double first = std::floor(phi0 * sectors / (2.0 * Pi) - 0.5);
+  const double last = std::floor(phi1 * sectors / (2.0 * Pi) - 0.5) + 1.0;
+  const int count = static_cast<int>(std::min(double(sectors), last - first + 1.0));
+  const int k0 = static_cast<int>(first - sectors * std::floor(first / sectors));
+  range[0] = range[1] = horizons[k0];
+  for (int i = 1; i < count; ++i)
+  {
+    const double h = horizons[(k0 + i) % sectors];
+    range[0] = std::min(range[0], h);
+    range[1] = std::max(range[1], h);
   }
 }
 }
@@ -113,19 +126,25 @@ void LightSums(const double n[3], const float* horizons, int sectors, const doub
   const double beta = std::asin(std::min(1.0, std::max(-1.0, l[2])));
   const double psi = std::atan2(l[1], l[0]);
   const double sinR = std::sin(rl), halfSin = std::sin(0.5 * rl);
-  const double highest = *std::max_element(horizons, horizons + sectors);
-  if (beta - rl >= highest && vtkMath::Dot(n, l) >= sinR)
-  {
-    // Above every horizon and the tangent plane: the whole cap, in closed form.
-    sums[0] = 4.0 * Pi * halfSin * halfSin;
-    sums[1] = Pi * sinR * sinR * vtkMath::Dot(n, l);
-    return;
-  }
   const bool polar = std::abs(beta) + rl >= HalfPi;
-  const int count =
-    polar ? vtkHorizonLighting::PolarLightSamples() : vtkHorizonLighting::LightSamples();
   const double cosB = std::cos(beta), sinB = std::sin(beta);
   const double span = polar ? Pi : std::asin(std::min(1.0, sinR / cosB));
+  double range[2];
+  HorizonRange(horizons, sectors, psi - span, psi + span, range);
+  const double facing = vtkMath::Dot(n, l);
+  if (beta + rl <= range[0] || facing <= -sinR)
+  {
+    return; // below the horizons or the tangent plane all over its span
+  }
+  if (beta - rl >= range[1] && facing >= sinR)
+  {
+    // Above the horizons and the tangent plane all over its span: the whole cap, closed form.
+    sums[0] = 4.0 * Pi * halfSin * halfSin;
+    sums[1] = Pi * sinR * sinR * facing;
+    return;
+  }
+  const int count =
+    polar ? vtkHorizonLighting::PolarLightSamples() : vtkHorizonLighting::LightSamples();
   for (int q = 0; q < count; ++q)
   {
     const double theta = Pi * (q + 0.5) / count;
@@ -184,20 +203,34 @@ double vtkHorizonLighting::SkyTransfer(const double normal[3], const float* hori
     return 0.0;
   }
   const double width = 2.0 * Pi / sectors;
+  // The sectors' bounds and middles by rotation, without trigonometry per sector.
+  const double step[2] = { std::cos(width), std::sin(width) };
+  const double halfStep[2] = { std::cos(0.5 * width), std::sin(0.5 * width) };
+  double bound[2] = { 1.0, 0.0 }; // cos, sin of the sector's first azimuth
   double open = 0.0, openCosine = 0.0;
   for (int k = 0; k < sectors; ++k)
   {
-    const double phi0 = k * width, phi1 = phi0 + width, middle = phi0 + 0.5 * width;
+    const double next[2] = { bound[0] * step[0] - bound[1] * step[1],
+      bound[1] * step[0] + bound[0] * step[1] };
+    const double middle[2] = { bound[0] * halfStep[0] - bound[1] * halfStep[1],
+      bound[1] * halfStep[0] + bound[0] * halfStep[1] };
+    // The wedge's floor: the horizon, or the tangent plane (slope t) where that is higher.
     const double h = std::min(HalfPi, std::max(-HalfPi, double(horizons[k])));
-    const double e = std::max(h, TangentElevation(n, std::cos(middle), std::sin(middle)));
-    const double sinE = std::sin(e), cosE = std::cos(e);
+    const double t = -(n[0] * middle[0] + n[1] * middle[1]) / std::max(n[2], 1e-4);
+    double e = h, sinE = std::sin(h), cosE = std::cos(h);
+    if (sinE < t * cosE)
+    {
+      cosE = 1.0 / std::sqrt(1.0 + t * t);
+      sinE = t * cosE;
+      e = std::atan(t);
+    }
     // Over elevations e … π/2: solid angle, ∫ cos²e de and ∫ sin e cos e de.
     const double horizontal = 0.25 * Pi - 0.5 * (e + sinE * cosE);
     open += width * (1.0 - sinE);
-    openCosine +=
-      (n[0] * (std::sin(phi1) - std::sin(phi0)) + n[1] * (std::cos(phi0) - std::cos(phi1))) *
-        horizontal +
+    openCosine += (n[0] * (next[1] - bound[1]) + n[1] * (bound[0] - next[0])) * horizontal +
       n[2] * width * 0.5 * cosE * cosE;
+    bound[0] = next[0];
+    bound[1] = next[1];
   }
   return cosineWeighted ? std::max(0.0, openCosine - cosineCoverage) / Pi
                         : std::max(0.0, open - coverage) / (2.0 * Pi);

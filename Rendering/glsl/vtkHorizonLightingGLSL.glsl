@@ -28,27 +28,41 @@ float horizonLightingTangent(vec3 n, float c, float s)
   return sphericalCapAtan2(-(n.x * c + n.y * s), max(n.z, 1e-4));
 }
 
-// Adds one azimuth phi of a light cap, elevations [eLow, eHigh], above horizon h, weighted by w:
-// its solid angle (x) and its integral of n . w (y, above the tangent plane too).
+// Adds one azimuth phi of a light cap, elevations [eLow, eHigh], above horizon h and the tangent
+// plane, weighted by w: its solid angle (x) and its integral of n . w (y).
 void horizonLightingAddMeridian(
   vec3 n, float phi, float eLow, float eHigh, float h, float w, inout vec2 sums)
 {
   float c = cos(phi);
   float s = sin(phi);
-  float seen = max(eLow, h);
-  if (eHigh > seen)
-  {
-    sums.x += w * 2.0 * cos(0.5 * (eHigh + seen)) * sin(0.5 * (eHigh - seen));
-  }
-  float lit = max(seen, horizonLightingTangent(n, c, s));
+  float lit = max(max(eLow, h), horizonLightingTangent(n, c, s));
   if (eHigh > lit)
   {
     float width = eHigh - lit;
     float sinWidth = sin(width);
     float horizontal = 0.5 * width + 0.5 * cos(eHigh + lit) * sinWidth;
     float vertical = 0.5 * sin(eHigh + lit) * sinWidth;
+    sums.x += w * 2.0 * cos(0.5 * (eHigh + lit)) * sin(0.5 * width);
     sums.y += w * ((n.x * c + n.y * s) * horizontal + n.z * vertical);
   }
+}
+
+// The lowest (x) and highest (y) horizon that horizonLightingAt() takes over azimuths
+// [phi0, phi1]: those of the sectors whose middles bracket them.
+vec2 horizonLightingRange(float horizons[HORIZON_LIGHTING_SECTORS], float phi0, float phi1)
+{
+  float sectors = float(HORIZON_LIGHTING_SECTORS);
+  float first = floor(phi0 * sectors / (2.0 * sphericalCapPi) - 0.5);
+  float last = floor(phi1 * sectors / (2.0 * sphericalCapPi) - 0.5) + 1.0;
+  int count = int(min(sectors, last - first + 1.0));
+  int k0 = clamp(int(first - sectors * floor(first / sectors)), 0, HORIZON_LIGHTING_SECTORS - 1);
+  vec2 range = vec2(horizons[k0]);
+  for (int i = 1; i < count; ++i)
+  {
+    float h = horizons[(k0 + i) % HORIZON_LIGHTING_SECTORS];
+    range = vec2(min(range.x, h), max(range.y, h));
+  }
+  return range;
 }
 
 // A light cap (unit axis l, radius rl, clamped) above the horizons and the tangent plane of the
@@ -59,20 +73,21 @@ vec2 horizonLightingLightSums(vec3 n, float horizons[HORIZON_LIGHTING_SECTORS], 
   float psi = sphericalCapAtan2(l.y, l.x);
   float sinR = sin(rl);
   float halfSin = sin(0.5 * rl);
-  float highest = horizons[0];
-  for (int k = 1; k < HORIZON_LIGHTING_SECTORS; ++k)
-  {
-    highest = max(highest, horizons[k]);
-  }
-  if (beta - rl >= highest && dot(n, l) >= sinR)
-  {
-    return vec2(4.0 * sphericalCapPi * halfSin * halfSin, sphericalCapPi * sinR * sinR * dot(n, l));
-  }
   bool polar = abs(beta) + rl >= 0.5 * sphericalCapPi;
-  int count = polar ? horizonLightingPolarSamples : horizonLightingSamples;
   float cosB = cos(beta);
   float sinB = sin(beta);
   float span = polar ? sphericalCapPi : horizonLightingAsin(min(1.0, sinR / cosB));
+  vec2 range = horizonLightingRange(horizons, psi - span, psi + span);
+  float facing = dot(n, l);
+  if (beta + rl <= range.x || facing <= -sinR)
+  {
+    return vec2(0.0);
+  }
+  if (beta - rl >= range.y && facing >= sinR)
+  {
+    return vec2(4.0 * sphericalCapPi * halfSin * halfSin, sphericalCapPi * sinR * sinR * facing);
+  }
+  int count = polar ? horizonLightingPolarSamples : horizonLightingSamples;
   vec2 sums = vec2(0.0);
   for (int q = 0; q < count; ++q)
   {
@@ -127,21 +142,32 @@ float horizonLightingSkyTransfer(
   }
   n = n / ln;
   float width = 2.0 * sphericalCapPi / float(HORIZON_LIGHTING_SECTORS);
+  // The sectors' bounds and middles by rotation, without trigonometry per sector.
+  vec2 step = vec2(cos(width), sin(width));
+  vec2 halfStep = vec2(cos(0.5 * width), sin(0.5 * width));
+  vec2 bound = vec2(1.0, 0.0);
   float open = 0.0;
   float openCosine = 0.0;
   for (int k = 0; k < HORIZON_LIGHTING_SECTORS; ++k)
   {
-    float phi0 = float(k) * width;
-    float phi1 = phi0 + width;
-    float middle = phi0 + 0.5 * width;
+    vec2 next = vec2(bound.x * step.x - bound.y * step.y, bound.y * step.x + bound.x * step.y);
+    vec2 middle = vec2(bound.x * halfStep.x - bound.y * halfStep.y, bound.y * halfStep.x + bound.x * halfStep.y);
     float h = clamp(horizons[k], -0.5 * sphericalCapPi, 0.5 * sphericalCapPi);
-    float e = max(h, horizonLightingTangent(n, cos(middle), sin(middle)));
-    float sinE = sin(e);
-    float cosE = cos(e);
+    float t = -(n.x * middle.x + n.y * middle.y) / max(n.z, 1e-4);
+    float e = h;
+    float sinE = sin(h);
+    float cosE = cos(h);
+    if (sinE < t * cosE)
+    {
+      cosE = inversesqrt(1.0 + t * t);
+      sinE = t * cosE;
+      e = sphericalCapAtan2(t, 1.0);
+    }
     float horizontal = 0.25 * sphericalCapPi - 0.5 * (e + sinE * cosE);
     open += width * (1.0 - sinE);
-    openCosine += (n.x * (sin(phi1) - sin(phi0)) + n.y * (cos(phi0) - cos(phi1))) * horizontal +
+    openCosine += (n.x * (next.y - bound.y) + n.y * (bound.x - next.x)) * horizontal +
       n.z * width * 0.5 * cosE * cosE;
+    bound = next;
   }
   return cosineWeighted ? max(0.0, openCosine - coverage.y) / sphericalCapPi
                         : max(0.0, open - coverage.x) / (2.0 * sphericalCapPi);

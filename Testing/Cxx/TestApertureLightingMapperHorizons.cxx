@@ -302,6 +302,17 @@ void TestPerVertex(Bench& bench)
   bench.Observer->Clear();
   bench.Run(s, quads, 24, true);
   Check(!bench.Observer->GetWarning(), "a persisting problem warns once");
+  vtkNew<vtkFloatArray> three;
+  three->SetName("HorizonAngles");
+  three->SetNumberOfComponents(3);
+  three->SetNumberOfTuples(mesh->GetNumberOfPoints());
+  three->Fill(0.1);
+  mesh->GetPointData()->AddArray(three);
+  worst = bench.Run(s, quads, 24, true);
+  Check(worst <= 1.0, "horizons of 3 sectors give the exact cap (/255)", worst, 1.0);
+  Check(bench.Observer->GetWarningMessage().find("3 components") != std::string::npos,
+    "horizons of 3 sectors warn");
+  bench.Observer->Clear();
   mesh->GetPointData()->RemoveArray("HorizonAngles");
   worst = bench.Run(s, quads, 24, true);
   Check(worst <= 1.0, "missing horizons give the exact cap (/255)", worst, 1.0);
