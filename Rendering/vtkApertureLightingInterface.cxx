@@ -607,7 +607,7 @@ void vtkApertureLightingInterface::ReplaceHorizonCode(
 {
   const int outputs = (sectors + 3) / 4;
   std::ostringstream read;
-  read << "void apertureReadHorizons(out float h[HORIZON_LIGHTING_SECTORS])\n{\n";
+  read << "void apertureReadHorizons()\n{\n";
   if (perTexel)
   {
     // Four 8-bit codes a layer, filtered between texels.
@@ -616,7 +616,7 @@ void vtkApertureLightingInterface::ReplaceHorizonCode(
     read << "  for (int k = 0; k < HORIZON_LIGHTING_SECTORS; ++k)\n  {\n"
          << "    vec4 codes = texture(apertureHorizonTexture, vec3(apertureUVVSOutput, "
             "float(k / 4)));\n"
-         << "    h[k] = horizonLightingDecode(codes[k % 4]);\n  }\n}\n";
+         << "    horizonLightingHorizons[k] = horizonLightingDecode(codes[k % 4]);\n  }\n}\n";
     vtkShaderProgram::Substitute(fs, "//APERTURE::Horizons::Dec", read.str());
     return;
   }
@@ -652,7 +652,7 @@ void vtkApertureLightingInterface::ReplaceHorizonCode(
   }
   vsImpl << "  }";
   read << ");\n  for (int k = 0; k < HORIZON_LIGHTING_SECTORS; ++k)\n  {\n"
-       << "    h[k] = v[k / 4][k % 4];\n  }\n}\n";
+       << "    horizonLightingHorizons[k] = v[k / 4][k % 4];\n  }\n}\n";
   vtkShaderProgram::Substitute(vs, "//VTK::Normal::Dec", vsDec.str());
   vtkShaderProgram::Substitute(vs, "//VTK::Normal::Impl", vsImpl.str());
   vtkShaderProgram::Substitute(gs, "//VTK::Normal::Dec", "//VTK::Normal::Dec\n" + gsDec.str());

@@ -78,8 +78,7 @@ struct apertureFragment
   float covered;
   float coveredCosine;
 #ifdef APERTURE_HORIZONS
-  vec3 normalModel;
-  float horizons[HORIZON_LIGHTING_SECTORS];
+  vec3 normalModel; // the horizons themselves are the twin's horizonLightingHorizons
 #endif
 };
 
@@ -111,7 +110,7 @@ apertureFragment apertureBeginFragment(vec3 n, vec3 position, float specularPowe
   f.coveredCosine = 0.0;
 #ifdef APERTURE_HORIZONS
   f.normalModel = apertureViewToModel * n;
-  apertureReadHorizons(f.horizons);
+  apertureReadHorizons();
 #endif
   return f;
 }
@@ -132,7 +131,7 @@ void apertureAddLight(inout apertureFragment f, sphericalCapCap light, vec3 colo
 #ifdef APERTURE_HORIZONS
     vec2 sums;
     transfer = horizonLightingLightTransfer(
-      f.normalModel, f.horizons, apertureViewToModel * L, light.radius, sums);
+      f.normalModel, apertureViewToModel * L, light.radius, sums);
     float coverage = sums.x;
     f.coveredCosine += sums.y;
 #else
@@ -234,7 +233,7 @@ vec4 apertureEndFragment(apertureFragment f, vec3 ambientColor, vec3 diffuseColo
 #elif defined(APERTURE_HORIZONS)
     diffuse += apertureSkyColor *
       horizonLightingSkyTransfer(
-        f.normalModel, f.horizons, vec2(f.covered, f.coveredCosine), apertureSkyCosine != 0);
+        f.normalModel, vec2(f.covered, f.coveredCosine), apertureSkyCosine != 0);
 #else
     diffuse += apertureSkyColor *
       sphericalCapSkyShade(f.aperture, f.covered, cosNormalBent, apertureSkyCosine != 0);

@@ -1,10 +1,13 @@
 // ApertureLighting: the GLSL twin of vtkHorizonLighting (see that class for the conventions and
 // the formulas). Needs vtkSphericalCapGLSL (for its pi and atan2), vtkHorizonLightingCodeGLSL,
-// vtkHorizonLighting's GetGLSLConstants(), and HORIZON_LIGHTING_SECTORS, the number of sectors
-// of the arrays taken.
+// vtkHorizonLighting's GetGLSLConstants(), and HORIZON_LIGHTING_SECTORS, the number of sectors.
+
+// The horizons of the point being shaded, which the functions below read: GLSL passes arrays by
+// value, and a software rasteriser copied them on every call at a greater cost than the shading.
+float horizonLightingHorizons[HORIZON_LIGHTING_SECTORS];
 
 // The horizon at an azimuth, linear between sector middles, around the circle.
-float horizonLightingAt(float horizons[HORIZON_LIGHTING_SECTORS], float azimuth)
+float horizonLightingAt(float azimuth)
 {
   float sectors = float(HORIZON_LIGHTING_SECTORS);
   float u = azimuth * sectors / (2.0 * sphericalCapPi) - 0.5;
@@ -13,7 +16,7 @@ float horizonLightingAt(float horizons[HORIZON_LIGHTING_SECTORS], float azimuth)
   int k0 = int(k - sectors * floor(k / sectors));
   k0 = clamp(k0, 0, HORIZON_LIGHTING_SECTORS - 1);
   int k1 = k0 + 1 == HORIZON_LIGHTING_SECTORS ? 0 : k0 + 1;
-  return horizons[k0] + f * (horizons[k1] - horizons[k0]);
+  return horizonLightingHorizons[k0] + f * (horizonLightingHorizons[k1] - horizonLightingHorizons[k0]);
 }
 
 // asin through sphericalCapAtan2, whose precision for small angles the built-in may lack.
@@ -49,17 +52,17 @@ void horizonLightingAddMeridian(
 
 // The lowest (x) and highest (y) horizon that horizonLightingAt() takes over azimuths
 // [phi0, phi1]: those of the sectors whose middles bracket them.
-vec2 horizonLightingRange(float horizons[HORIZON_LIGHTING_SECTORS], float phi0, float phi1)
+vec2 horizonLightingRange(float phi0, float phi1)
 {
   float sectors = float(HORIZON_LIGHTING_SECTORS);
   float first = floor(phi0 * sectors / (2.0 * sphericalCapPi) - 0.5);
   float last = floor(phi1 * sectors / (2.0 * sphericalCapPi) - 0.5) + 1.0;
   int count = int(min(sectors, last - first + 1.0));
   int k0 = clamp(int(first - sectors * floor(first / sectors)), 0, HORIZON_LIGHTING_SECTORS - 1);
-  vec2 range = vec2(horizons[k0]);
+  vec2 range = vec2(horizonLightingHorizons[k0]);
   for (int i = 1; i < count; ++i)
   {
-    float h = horizons[(k0 + i) % HORIZON_LIGHTING_SECTORS];
+    float h = horizonLightingHorizons[(k0 + i) % HORIZON_LIGHTING_SECTORS];
     range = vec2(min(range.x, h), max(range.y, h));
   }
   return range;
@@ -67,7 +70,7 @@ vec2 horizonLightingRange(float horizons[HORIZON_LIGHTING_SECTORS], float phi0, 
 
 // A light cap (unit axis l, radius rl, clamped) above the horizons and the tangent plane of the
 // unit normal n: its solid angle (x) and its integral of n . w (y).
-vec2 horizonLightingLightSums(vec3 n, float horizons[HORIZON_LIGHTING_SECTORS], vec3 l, float rl)
+vec2 horizonLightingLightSums(vec3 n, vec3 l, float rl)
 {
   float beta = horizonLightingAsin(clamp(l.z, -1.0, 1.0));
   float psi = sphericalCapAtan2(l.y, l.x);
@@ -77,7 +80,7 @@ vec2 horizonLightingLightSums(vec3 n, float horizons[HORIZON_LIGHTING_SECTORS], 
   float cosB = cos(beta);
   float sinB = sin(beta);
   float span = polar ? sphericalCapPi : horizonLightingAsin(min(1.0, sinR / cosB));
-  vec2 range = horizonLightingRange(horizons, psi - span, psi + span);
+  vec2 range = horizonLightingRange(psi - span, psi + span);
   float facing = dot(n, l);
   if (beta + rl <= range.x || facing <= -sinR)
   {
@@ -105,7 +108,7 @@ vec2 horizonLightingLightSums(vec3 n, float horizons[HORIZON_LIGHTING_SECTORS], 
       float delta = sphericalCapAtan2(sinB, a);
       float phi = psi + offset;
       horizonLightingAddMeridian(n, phi, max(delta - gamma, -0.5 * sphericalCapPi),
-        min(delta + gamma, 0.5 * sphericalCapPi), horizonLightingAt(horizons, phi), weight, sums);
+        min(delta + gamma, 0.5 * sphericalCapPi), horizonLightingAt(phi), weight, sums);
     }
   }
   return vec2(sums.x, max(0.0, sums.y));
@@ -114,7 +117,7 @@ vec2 horizonLightingLightSums(vec3 n, float horizons[HORIZON_LIGHTING_SECTORS], 
 // vtkHorizonLighting::LightTransfer(): the irradiance from a light of intensity 1, with the
 // light's solid angle above the horizons (coverage.x) and its integral of n . w (coverage.y).
 float horizonLightingLightTransfer(
-  vec3 n, float horizons[HORIZON_LIGHTING_SECTORS], vec3 l, float rl, out vec2 coverage)
+  vec3 n, vec3 l, float rl, out vec2 coverage)
 {
   coverage = vec2(0.0);
   float ln = length(n);
@@ -125,7 +128,7 @@ float horizonLightingLightTransfer(
     return 0.0;
   }
   rl = sphericalCapClampLightRadius(rl);
-  coverage = horizonLightingLightSums(n / ln, horizons, l / ll, rl);
+  coverage = horizonLightingLightSums(n / ln, l / ll, rl);
   float s = sin(rl);
   return coverage.y / (sphericalCapPi * s * s);
 }
@@ -133,7 +136,7 @@ float horizonLightingLightTransfer(
 // vtkHorizonLighting::SkyTransfer(): the sky through the sectors' open wedges less the lights'
 // coverage (their sums).
 float horizonLightingSkyTransfer(
-  vec3 n, float horizons[HORIZON_LIGHTING_SECTORS], vec2 coverage, bool cosineWeighted)
+  vec3 n, vec2 coverage, bool cosineWeighted)
 {
   float ln = length(n);
   if (any(isnan(n)) || !(ln > 0.0) || isinf(ln) || any(isnan(coverage)))
@@ -152,7 +155,7 @@ float horizonLightingSkyTransfer(
   {
     vec2 next = vec2(bound.x * step.x - bound.y * step.y, bound.y * step.x + bound.x * step.y);
     vec2 middle = vec2(bound.x * halfStep.x - bound.y * halfStep.y, bound.y * halfStep.x + bound.x * halfStep.y);
-    float h = clamp(horizons[k], -0.5 * sphericalCapPi, 0.5 * sphericalCapPi);
+    float h = clamp(horizonLightingHorizons[k], -0.5 * sphericalCapPi, 0.5 * sphericalCapPi);
     float t = -(n.x * middle.x + n.y * middle.y) / max(n.z, 1e-4);
     float e = h;
     float sinE = sin(h);

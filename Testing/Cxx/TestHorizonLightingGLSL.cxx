@@ -68,26 +68,25 @@ void main()
   ivec2 texel = ivec2(texCoord * vec2(textureSize(normals, 0)));
   vec4 p = texelFetch(normals, texel, 0);
   vec3 l = texelFetch(lights, texel, 0).xyz;
-  float h[HORIZON_LIGHTING_SECTORS];
   for (int j = 0; j < HORIZON_LIGHTING_SECTORS / 4; ++j)
   {
     vec4 four = texelFetch(horizonTexels, ivec2(texel.x * HORIZON_LIGHTING_SECTORS / 4 + j, texel.y), 0);
-    h[4 * j] = four.x;
-    h[4 * j + 1] = four.y;
-    h[4 * j + 2] = four.z;
-    h[4 * j + 3] = four.w;
+    horizonLightingHorizons[4 * j] = four.x;
+    horizonLightingHorizons[4 * j + 1] = four.y;
+    horizonLightingHorizons[4 * j + 2] = four.z;
+    horizonLightingHorizons[4 * j + 3] = four.w;
   }
   vec2 coverage;
-  float transfer = horizonLightingLightTransfer(p.xyz, h, l, p.w, coverage);
+  float transfer = horizonLightingLightTransfer(p.xyz, l, p.w, coverage);
   if (pass == 0)
   {
-    gl_FragData[0] = vec4(transfer, coverage, horizonLightingSkyTransfer(p.xyz, h, coverage, true));
+    gl_FragData[0] = vec4(transfer, coverage, horizonLightingSkyTransfer(p.xyz, coverage, true));
   }
   else
   {
     float code = float((texel.x + texel.y * textureSize(normals, 0).x) % 256);
-    gl_FragData[0] = vec4(horizonLightingSkyTransfer(p.xyz, h, coverage, false),
-      horizonLightingDecode(code / 255.0), horizonLightingAt(h, sphericalCapAtan2(l.y, l.x)), 0.0);
+    gl_FragData[0] = vec4(horizonLightingSkyTransfer(p.xyz, coverage, false),
+      horizonLightingDecode(code / 255.0), horizonLightingAt(sphericalCapAtan2(l.y, l.x)), 0.0);
   }
 }
 )";
