@@ -23,6 +23,7 @@
 #include "vtkHorizonHeightField.h"
 #include "vtkMortonOrder.h"
 #include "vtkSphericalCap.h"
+#include "vtkVisibilityMask.h"
 
 #include "vtkAlgorithmOutput.h"
 #include "vtkCompositeDataIterator.h"
@@ -57,10 +58,18 @@ namespace
 constexpr double Pi = vtkMath::Pi();
 constexpr int Lanes = vtkApertureRayPacket::Lanes;
 
-// The caps of a surface's receiving points.
+// The caps of a surface's receiving points, and their visibility masks.
 struct Caps
 {
   std::vector<float> BentNormal, Radius, Occlusion;
+  std::vector<unsigned char> Mask;
+};
+
+// What the mask asks for: its grid's side (0 for no mask) and rays per cell along a side.
+struct MaskSettings
+{
+  int Side = 0;
+  int RaysSide = 2;
 };
 
 // Casts the rays of a range of receiving points of one surface and writes their caps.
@@ -68,11 +77,13 @@ class CastRays
 {
 public:
   CastRays(const vtkApertureSurface& surface, const vtkApertureRayScene& scene,
-    const vtkApertureRaySampler& sampler, float maximumDistance, Caps& caps)
+    const vtkApertureRaySampler& sampler, float maximumDistance, const MaskSettings& mask,
+    Caps& caps)
     : Surface(surface)
     , Scene(scene)
     , Sampler(sampler)
     , MaximumDistance(maximumDistance)
+    , Mask(mask)
     , Out(caps)
   {
     std::vector<float> positions(3 * surface.GetNumberOfPoints());
@@ -86,12 +97,17 @@ public:
   void operator()(vtkIdType begin, vtkIdType end) const
   {
     vtkApertureRayPacket packet(this->Scene, this->Surface);
+    std::vector<int> seen(this->Mask.Side * this->Mask.Side);
     for (vtkIdType k = begin; k < end; ++k)
     {
       const vtkIdType id = this->Order[k];
       if (this->Surface.Valid[id])
       {
         this->Cast(packet, id);
+        if (this->Mask.Side > 0)
+        {
+          this->CastMask(packet, id, seen);
+        }
       }
       else
       {
@@ -150,10 +166,50 @@ private:
     }
   }
 
+  // The point's mask: RaysSide² rays on a sub-grid of each cell; open where half escape.
+  void CastMask(vtkApertureRayPacket& packet, vtkIdType id, std::vector<int>& seen) const
+  {
+    const float* nrm = this->Surface.GetNormal(id);
+    const double n[3] = { nrm[0], nrm[1], nrm[2] };
+    const int side = this->Mask.Side, per = this->Mask.RaysSide, cells = side * side;
+    const int rays = cells * per * per;
+    std::fill(seen.begin(), seen.end(), 0);
+    for (int first = 0; first < rays; first += Lanes)
+    {
+      for (int lane = 0; lane < Lanes; ++lane)
+      {
+        const int q = first + lane, cell = q / (per * per), sub = q % (per * per);
+        if (q >= rays)
+        {
+          packet.Clear(lane);
+          continue;
+        }
+        double w[3];
+        vtkVisibilityMask::Direction(n, (cell % side + (sub % per + 0.5) / per) / side,
+          (cell / side + (sub / per + 0.5) / per) / side, w);
+        const float direction[3] = { static_cast<float>(w[0]), static_cast<float>(w[1]),
+          static_cast<float>(w[2]) };
+        packet.Set(lane, id, direction, this->MaximumDistance);
+      }
+      packet.Trace();
+      for (int lane = 0; lane < Lanes && first + lane < rays; ++lane)
+      {
+        seen[(first + lane) / (per * per)] += packet.Visible(lane) ? 1 : 0;
+      }
+    }
+    unsigned char* bytes = &this->Out.Mask[static_cast<size_t>(id) * (cells / 8)];
+    std::fill_n(bytes, cells / 8, 0);
+    for (int cell = 0; cell < cells; ++cell)
+    {
+      bytes[cell / 8] |= 2 * seen[cell] >= per * per ? 1 << (cell % 8) : 0;
+    }
+  }
+
   const vtkApertureSurface& Surface;
   const vtkApertureRayScene& Scene;
   const vtkApertureRaySampler& Sampler;
   float MaximumDistance;
+  MaskSettings Mask;
   Caps& Out;
   std::vector<std::uint32_t> Order;
 };
@@ -393,6 +449,24 @@ bool vtkAperturePrecompute::vtkRun::ChooseMethod()
     return false;
   }
   this->Horizons = possible && this->Self->Method != RAYS;
+  const int rays = this->Self->VisibilityMaskRaysPerCell;
+  if (this->Self->ComputeVisibilityMask && !this->Horizons &&
+    (!vtkVisibilityMask::IsValidBitCount(this->Self->VisibilityMaskBits) ||
+      !(rays == 1 || rays == 4 || rays == 9 || rays == 16)))
+  {
+    vtkErrorWithObjectMacro(this->Self,
+      "A visibility mask has 64, 144, 256, 400, 576, 784 or 1024 cells and 1, 4, 9 or 16 rays a "
+      "cell, not "
+        << this->Self->VisibilityMaskBits << " cells and " << rays << " rays.");
+    return false;
+  }
+  if (this->Self->ComputeVisibilityMask && this->Horizons)
+  {
+    vtkWarningWithObjectMacro(this->Self,
+      "A visibility mask comes from rays; this update sweeps horizons, so there is no "
+        << vtkApertureText::Quote(this->Self->VisibilityMaskArrayName)
+        << " array (SetMethodToRays() casts rays on a height field).");
+  }
   if (this->Self->ComputeHorizonAngles && !this->Horizons)
   {
     vtkWarningWithObjectMacro(this->Self,
@@ -519,6 +593,12 @@ bool vtkAperturePrecompute::vtkRun::Cast()
   const float maximumDistance = self->SearchDistance() >= FLT_MAX
     ? std::numeric_limits<float>::infinity()
     : static_cast<float>(self->SearchDistance());
+  MaskSettings mask;
+  if (self->ComputeVisibilityMask)
+  {
+    mask.Side = vtkVisibilityMask::GetSide(self->VisibilityMaskBits);
+    mask.RaysSide = static_cast<int>(std::lround(std::sqrt(self->VisibilityMaskRaysPerCell)));
+  }
   vtkIdType casting = 0;
   for (const auto& r : this->Receivers)
   {
@@ -534,7 +614,8 @@ bool vtkAperturePrecompute::vtkRun::Cast()
     r->Results.BentNormal.resize(3 * n);
     r->Results.Radius.resize(n);
     r->Results.Occlusion.assign(self->ComputeAmbientOcclusion ? n : 0, 0.0f);
-    const CastRays cast(r->Surface, this->Scene, sampler, maximumDistance, r->Results);
+    r->Results.Mask.assign(mask.Side > 0 ? n * mask.Side * mask.Side / 8 : 0, 0);
+    const CastRays cast(r->Surface, this->Scene, sampler, maximumDistance, mask, r->Results);
     auto progress = [&](vtkIdType traced)
     {
       self->UpdateProgress(static_cast<double>(done + traced) / std::max<vtkIdType>(casting, 1));
@@ -589,6 +670,13 @@ void vtkAperturePrecompute::vtkRun::WriteOutputs(const int* extent)
       pd->AddArray(
         vtkApertureSurfaceOutput::Scatter(self->AmbientOcclusionArrayName, 1, c.Occlusion.data(),
           c.Occlusion.data() + c.Occlusion.size(), points, &openOcclusion, &closedOcclusion));
+    }
+    if (!c.Mask.empty())
+    {
+      const int bytes = self->VisibilityMaskBits / 8;
+      const std::vector<unsigned char> open(bytes, 255), closed(bytes, 0);
+      pd->AddArray(vtkApertureSurfaceOutput::Scatter(self->VisibilityMaskArrayName, bytes,
+        c.Mask.data(), c.Mask.data() + c.Mask.size(), points, open.data(), closed.data()));
     }
     vtkApertureSurfaceOutput::AddComputedNormals(r->Surface, pd, points);
     // A tile: the input's halo cast rays, the output is the tile.
@@ -830,12 +918,16 @@ void vtkAperturePrecompute::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "HeightScale: " << this->HeightScale << "\n";
   os << indent << "ComputeAmbientOcclusion: " << this->ComputeAmbientOcclusion << "\n";
   os << indent << "ComputeHorizonAngles: " << this->ComputeHorizonAngles << "\n";
+  os << indent << "ComputeVisibilityMask: " << this->ComputeVisibilityMask << "\n";
+  os << indent << "VisibilityMaskBits: " << this->VisibilityMaskBits << "\n";
+  os << indent << "VisibilityMaskRaysPerCell: " << this->VisibilityMaskRaysPerCell << "\n";
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
   os << indent << "MaximumEdgeLength: " << this->MaximumEdgeLength << "\n";
   os << indent << "BentNormalArrayName: " << this->BentNormalArrayName << "\n";
   os << indent << "ApertureRadiusArrayName: " << this->ApertureRadiusArrayName << "\n";
   os << indent << "AmbientOcclusionArrayName: " << this->AmbientOcclusionArrayName << "\n";
   os << indent << "HorizonAnglesArrayName: " << this->HorizonAnglesArrayName << "\n";
+  os << indent << "VisibilityMaskArrayName: " << this->VisibilityMaskArrayName << "\n";
   os << indent << "AccelerationStructure: " << structures[this->AccelerationStructure] << "\n";
   static const char* const methods[] = { "HorizonsForHeightFields", "Rays", "Horizons" };
   os << indent << "Method: " << methods[this->Method] << "\n";

@@ -198,8 +198,36 @@ public:
 
   ///@{
   /**
+   * Also keep which cells of each point's hemisphere are open, for points that cast rays
+   * (horizon sweeps warn and keep none). Default off. `VisibilityMask` (unsigned char,
+   * VisibilityMaskBits / 8 components) holds one bit per cell of vtkVisibilityMask's equal-area
+   * grid in the point's tangent frame (cell k at bit k % 8 of component k / 8), 1 for open: a
+   * cell is open when at least half of its VisibilityMaskRaysPerCell rays, on a stratified
+   * sub-grid of the cell, escape, under the same contact and self-hit rules as the aperture's
+   * rays. They cost VisibilityMaskBits × VisibilityMaskRaysPerCell rays a point more (1024 at
+   * the defaults, four times the aperture's 256). Points that cast no rays get a closed mask
+   * (no-data) or an open one (points on no polygon), as their apertures are.
+   */
+  vtkSetMacro(ComputeVisibilityMask, bool);
+  vtkGetMacro(ComputeVisibilityMask, bool);
+  vtkBooleanMacro(ComputeVisibilityMask, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Cells of the mask: 64, 144, 256 (default, 32 bytes a point), 400, 576, 784 or 1024; rays per
+   * cell: 1, 4 (default), 9 or 16. Other values are an error when the mask is asked for.
+   */
+  vtkSetMacro(VisibilityMaskBits, int);
+  vtkGetMacro(VisibilityMaskBits, int);
+  vtkSetMacro(VisibilityMaskRaysPerCell, int);
+  vtkGetMacro(VisibilityMaskRaysPerCell, int);
+  ///@}
+
+  ///@{
+  /**
    * Names of the output arrays. Defaults: "BentNormal", "ApertureRadius", "AmbientOcclusion",
-   * "HorizonAngles".
+   * "HorizonAngles", "VisibilityMask".
    */
   vtkSetStdStringFromCharMacro(BentNormalArrayName);
   vtkGetCharFromStdStringMacro(BentNormalArrayName);
@@ -209,6 +237,8 @@ public:
   vtkGetCharFromStdStringMacro(AmbientOcclusionArrayName);
   vtkSetStdStringFromCharMacro(HorizonAnglesArrayName);
   vtkGetCharFromStdStringMacro(HorizonAnglesArrayName);
+  vtkSetStdStringFromCharMacro(VisibilityMaskArrayName);
+  vtkGetCharFromStdStringMacro(VisibilityMaskArrayName);
   ///@}
 
   ///@{
@@ -340,6 +370,9 @@ protected:
   double HeightScale = 1.0;
   bool ComputeAmbientOcclusion = false;
   bool ComputeHorizonAngles = false;
+  bool ComputeVisibilityMask = false;
+  int VisibilityMaskBits = 256;
+  int VisibilityMaskRaysPerCell = 4;
   double FeatureAngle = 60.0;
   double MaximumEdgeLength = 0.0;
   int AccelerationStructure = AUTOMATIC;
@@ -352,6 +385,7 @@ protected:
   std::string ApertureRadiusArrayName = "ApertureRadius";
   std::string AmbientOcclusionArrayName = "AmbientOcclusion";
   std::string HorizonAnglesArrayName = "HorizonAngles";
+  std::string VisibilityMaskArrayName = "VisibilityMask";
   std::string EmbreeConfiguration;
 
 private:

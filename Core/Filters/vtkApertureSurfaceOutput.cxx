@@ -20,6 +20,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -165,25 +166,46 @@ void vtkApertureSurfaceOutput::Make(const vtkApertureSurface& surface, vtkPolyDa
 }
 
 //------------------------------------------------------------------------------
-vtkSmartPointer<vtkFloatArray> vtkApertureSurfaceOutput::Scatter(const std::string& name,
-  int components, const float* begin, const float* end, const std::vector<vtkIdType>& outputPoints,
-  const float* open, const float* closed)
+namespace
+{
+template <typename ArrayType, typename T>
+vtkSmartPointer<ArrayType> ScatterValues(const std::string& name, int components, const T* begin,
+  const T* end, const std::vector<vtkIdType>& outputPoints, const T* open, const T* closed)
 {
   const vtkIdType n = static_cast<vtkIdType>(outputPoints.size());
-  auto array = vtkSmartPointer<vtkFloatArray>::New();
+  auto array = vtkSmartPointer<ArrayType>::New();
   array->SetName(name.c_str());
   array->SetNumberOfComponents(components);
   array->SetNumberOfTuples(n);
-  float* out = array->GetPointer(0);
+  T* out = array->GetPointer(0);
   const vtkIdType points = (end - begin) / components;
   for (vtkIdType o = 0; o < n; ++o)
   {
     const vtkIdType p = outputPoints[o];
-    const float* from = p >= 0 && p < points ? begin + components * p
-                                             : (p == vtkApertureSurface::Invalid ? closed : open);
+    const T* from = p >= 0 && p < points ? begin + components * p
+                                         : (p == vtkApertureSurface::Invalid ? closed : open);
     std::copy_n(from, components, out + components * o);
   }
   return array;
+}
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkFloatArray> vtkApertureSurfaceOutput::Scatter(const std::string& name,
+  int components, const float* begin, const float* end, const std::vector<vtkIdType>& outputPoints,
+  const float* open, const float* closed)
+{
+  return ScatterValues<vtkFloatArray>(name, components, begin, end, outputPoints, open, closed);
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkUnsignedCharArray> vtkApertureSurfaceOutput::Scatter(const std::string& name,
+  int components, const unsigned char* begin, const unsigned char* end,
+  const std::vector<vtkIdType>& outputPoints, const unsigned char* open,
+  const unsigned char* closed)
+{
+  return ScatterValues<vtkUnsignedCharArray>(
+    name, components, begin, end, outputPoints, open, closed);
 }
 
 //------------------------------------------------------------------------------

@@ -31,6 +31,7 @@ class vtkApertureSurface;
 class vtkFloatArray;
 class vtkPointData;
 class vtkPolyData;
+class vtkUnsignedCharArray;
 
 class VTKAPERTURELIGHTINGCORE_EXPORT vtkApertureSurfaceOutput
 {
@@ -53,6 +54,10 @@ public:
   static vtkSmartPointer<vtkFloatArray> Scatter(const std::string& name, int components,
     const float* begin, const float* end, const std::vector<vtkIdType>& outputPoints,
     const float* open, const float* closed);
+  static vtkSmartPointer<vtkUnsignedCharArray> Scatter(const std::string& name, int components,
+    const unsigned char* begin, const unsigned char* end,
+    const std::vector<vtkIdType>& outputPoints, const unsigned char* open,
+    const unsigned char* closed);
 
   /**
    * When the normals were computed here (the input had none: NormalsComputed), sets them as

@@ -1,0 +1,308 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    vtkVisibilityMask.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkVisibilityMask.h"
+
+#include "vtkDataArray.h"
+#include "vtkMath.h"
+#include "vtkObjectFactory.h"
+#include "vtkSphericalCap.h"
+
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+#include <vector>
+
+vtkStandardNewMacro(vtkVisibilityMask);
+
+namespace
+{
+constexpr double Pi = vtkMath::Pi();
+constexpr double QuarterPi = 0.25 * vtkMath::Pi();
+
+bool Unit(const double v[3], double u[3])
+{
+  const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  if (!(length > 0.0) || !std::isfinite(length))
+  {
+    return false;
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    u[k] = v[k] / length;
+  }
+  return true;
+}
+
+// Shirley and Chiu's concentric map from the square [-1, 1]² to the unit disk, and back.
+void SquareToDisk(double a, double b, double& x, double& y)
+{
+  if (a == 0.0 && b == 0.0)
+  {
+    x = y = 0.0;
+    return;
+  }
+  const bool wide = std::abs(a) > std::abs(b);
+  const double r = wide ? a : b;
+  const double phi = wide ? QuarterPi * (b / a) : 2.0 * QuarterPi - QuarterPi * (a / b);
+  x = r * std::cos(phi);
+  y = r * std::sin(phi);
+}
+
+void DiskToSquare(double x, double y, double& a, double& b)
+{
+  const double r = std::sqrt(x * x + y * y);
+  double phi = std::atan2(y, x);
+  phi = phi < -QuarterPi ? phi + 2.0 * Pi : phi;
+  if (phi < QuarterPi)
+  {
+    a = r;
+    b = r * phi / QuarterPi;
+  }
+  else if (phi < 3.0 * QuarterPi)
+  {
+    b = r;
+    a = r * (2.0 * QuarterPi - phi) / QuarterPi;
+  }
+  else if (phi < 5.0 * QuarterPi)
+  {
+    a = -r;
+    b = -r * (phi - Pi) / QuarterPi;
+  }
+  else
+  {
+    b = -r;
+    a = -r * (6.0 * QuarterPi - phi) / QuarterPi;
+  }
+}
+
+// ∫ n·ω dω per cell of a side × side grid, by a fine midpoint rule in the square (the maps are
+// area-preserving, and n·ω = z = 1 − ρ² with ρ = max(|a|, |b|) the disk radius); computed once
+// per grid.
+const std::vector<double>& CellCosines(int side)
+{
+  static std::mutex lock;
+  static std::vector<double> tables[33];
+  std::lock_guard<std::mutex> guard(lock);
+  std::vector<double>& table = tables[side];
+  if (table.empty())
+  {
+    const int fine = 64, cells = side * side;
+    table.resize(cells);
+    for (int cell = 0; cell < cells; ++cell)
+    {
+      double sum = 0.0;
+      for (int q = 0; q < fine * fine; ++q)
+      {
+        const double u = (cell % side + (q % fine + 0.5) / fine) / side;
+        const double v = (cell / side + (q / fine + 0.5) / fine) / side;
+        const double rho = std::max(std::abs(2.0 * u - 1.0), std::abs(2.0 * v - 1.0));
+        sum += 1.0 - rho * rho;
+      }
+      table[cell] = 2.0 * Pi / cells * sum / (fine * fine);
+    }
+  }
+  return table;
+}
+
+bool IsOpen(const unsigned char* mask, int cell)
+{
+  return (mask[cell / 8] >> (cell % 8)) & 1;
+}
+
+// The light's cap (unit l, radius rl) in open cells above the tangent plane of unit n: its
+// solid angle and ∫ n·ω dω, from a Fibonacci spiral of directions uniform over the cap.
+void LightSums(const double n[3], const unsigned char* mask, int side, const double l[3], double rl,
+  double sums[2])
+{
+  const int samples = vtkVisibilityMask::LightSamples();
+  double t[3], b[3];
+  vtkVisibilityMask::Frame(l, t, b);
+  const double halfSin = std::sin(0.5 * rl), capArea = 4.0 * Pi * halfSin * halfSin;
+  const double golden = Pi * (3.0 - std::sqrt(5.0));
+  for (int i = 0; i < samples; ++i)
+  {
+    // 1 − cos θ uniform in [0, 1 − cos rl], formed from the half angle for sun-sized caps.
+    const double down = 2.0 * halfSin * halfSin * (i + 0.5) / samples;
+    const double cosT = 1.0 - down, sinT = std::sqrt(std::max(0.0, down * (2.0 - down)));
+    const double c = std::cos(golden * i), s = std::sin(golden * i);
+    double w[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      w[k] = cosT * l[k] + sinT * (c * t[k] + s * b[k]);
+    }
+    const double z = vtkMath::Dot(n, w);
+    const int cell = vtkVisibilityMask::CellOf(n, w, side);
+    if (z > 0.0 && cell >= 0 && IsOpen(mask, cell))
+    {
+      sums[0] += capArea / samples;
+      sums[1] += capArea / samples * z;
+    }
+  }
+}
+
+// A point's mask from an array; empty when unusable.
+std::vector<unsigned char> PointMask(vtkDataArray* mask, vtkIdType point)
+{
+  std::vector<unsigned char> bytes;
+  if (!mask || point < 0 || point >= mask->GetNumberOfTuples() ||
+    !vtkVisibilityMask::IsValidBitCount(8 * mask->GetNumberOfComponents()))
+  {
+    return bytes;
+  }
+  bytes.resize(mask->GetNumberOfComponents());
+  for (size_t k = 0; k < bytes.size(); ++k)
+  {
+    bytes[k] = static_cast<unsigned char>(mask->GetComponent(point, static_cast<int>(k)));
+  }
+  return bytes;
+}
+}
+
+//------------------------------------------------------------------------------
+bool vtkVisibilityMask::IsValidBitCount(int bits)
+{
+  return GetSide(bits) > 0;
+}
+
+//------------------------------------------------------------------------------
+int vtkVisibilityMask::GetSide(int bits)
+{
+  const int side = static_cast<int>(std::lround(std::sqrt(std::max(0, bits))));
+  return bits >= 64 && bits <= 1024 && side * side == bits && bits % 8 == 0 ? side : 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkVisibilityMask::Frame(const double n[3], double t[3], double b[3])
+{
+  const double sign = std::copysign(1.0, n[2]);
+  const double a = -1.0 / (sign + n[2]);
+  const double c = n[0] * n[1] * a;
+  t[0] = 1.0 + sign * n[0] * n[0] * a;
+  t[1] = sign * c;
+  t[2] = -sign * n[0];
+  b[0] = c;
+  b[1] = sign + n[1] * n[1] * a;
+  b[2] = -n[1];
+}
+
+//------------------------------------------------------------------------------
+int vtkVisibilityMask::CellOf(const double n[3], const double w[3], int side)
+{
+  double t[3], b[3];
+  Frame(n, t, b);
+  const double z = vtkMath::Dot(w, n);
+  if (!(z >= 0.0) || side < 1)
+  {
+    return -1;
+  }
+  const double s = 1.0 / std::sqrt(1.0 + std::min(1.0, z));
+  double a, c;
+  DiskToSquare(vtkMath::Dot(w, t) * s, vtkMath::Dot(w, b) * s, a, c);
+  const int i = std::min(side - 1, std::max(0, static_cast<int>(0.5 * (a + 1.0) * side)));
+  const int j = std::min(side - 1, std::max(0, static_cast<int>(0.5 * (c + 1.0) * side)));
+  return i + side * j;
+}
+
+//------------------------------------------------------------------------------
+void vtkVisibilityMask::Direction(const double n[3], double u, double v, double w[3])
+{
+  double t[3], b[3], x, y;
+  Frame(n, t, b);
+  SquareToDisk(2.0 * u - 1.0, 2.0 * v - 1.0, x, y);
+  const double rho2 = std::min(1.0, x * x + y * y), s = std::sqrt(2.0 - rho2);
+  for (int k = 0; k < 3; ++k)
+  {
+    w[k] = x * s * t[k] + y * s * b[k] + (1.0 - rho2) * n[k];
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkVisibilityMask::CellCosine(int cell, int side)
+{
+  if (side < 1 || side > 32 || cell < 0 || cell >= side * side)
+  {
+    return 0.0;
+  }
+  return CellCosines(side)[cell];
+}
+
+//------------------------------------------------------------------------------
+double vtkVisibilityMask::LightTransfer(const double normal[3], const unsigned char* mask, int bits,
+  const double direction[3], double rl, double* coverage, double* cosineCoverage)
+{
+  double n[3], l[3];
+  double sums[2] = { 0.0, 0.0 };
+  const int side = GetSide(bits);
+  const bool usable = side > 0 && mask && !std::isnan(rl) && Unit(normal, n) && Unit(direction, l);
+  if (usable)
+  {
+    rl = vtkSphericalCap::ClampLightRadius(rl);
+    LightSums(n, mask, side, l, rl, sums);
+  }
+  if (coverage)
+  {
+    *coverage = sums[0];
+  }
+  if (cosineCoverage)
+  {
+    *cosineCoverage = sums[1];
+  }
+  return usable ? sums[1] * vtkSphericalCap::LightRadiance(rl) : 0.0;
+}
+
+//------------------------------------------------------------------------------
+double vtkVisibilityMask::SkyTransfer(const double normal[3], const unsigned char* mask, int bits,
+  double coverage, double cosineCoverage, bool cosineWeighted)
+{
+  double n[3];
+  const int side = GetSide(bits);
+  if (side == 0 || !mask || std::isnan(coverage) || std::isnan(cosineCoverage) || !Unit(normal, n))
+  {
+    return 0.0;
+  }
+  double open = 0.0, openCosine = 0.0;
+  for (int cell = 0; cell < bits; ++cell)
+  {
+    if (IsOpen(mask, cell))
+    {
+      open += 2.0 * Pi / bits;
+      openCosine += CellCosine(cell, side);
+    }
+  }
+  return cosineWeighted ? std::max(0.0, openCosine - cosineCoverage) / Pi
+                        : std::max(0.0, open - coverage) / (2.0 * Pi);
+}
+
+//------------------------------------------------------------------------------
+double vtkVisibilityMask::LightTransfer(
+  vtkDataArray* mask, vtkIdType point, const double n[3], const double l[3], double rl)
+{
+  const std::vector<unsigned char> bytes = PointMask(mask, point);
+  return bytes.empty() ? 0.0
+                       : LightTransfer(n, bytes.data(), 8 * static_cast<int>(bytes.size()), l, rl);
+}
+
+//------------------------------------------------------------------------------
+double vtkVisibilityMask::SkyTransfer(
+  vtkDataArray* mask, vtkIdType point, const double n[3], bool cosineWeighted)
+{
+  const std::vector<unsigned char> bytes = PointMask(mask, point);
+  return bytes.empty()
+    ? 0.0
+    : SkyTransfer(n, bytes.data(), 8 * static_cast<int>(bytes.size()), 0.0, 0.0, cosineWeighted);
+}
+
+//------------------------------------------------------------------------------
+void vtkVisibilityMask::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "LightSamples: " << LightSamples() << "\n";
+}
