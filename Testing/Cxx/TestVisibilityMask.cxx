@@ -20,6 +20,7 @@
 #include "vtkAppendPolyData.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkExecutive.h"
 #include "vtkMath.h"
 #include "vtkMinimalStandardRandomSequence.h"
 #include "vtkNew.h"
@@ -308,6 +309,7 @@ void TestPrecomputedMasks()
 
   vtkNew<vtkTest::ErrorObserver> observer;
   precompute->AddObserver(vtkCommand::ErrorEvent, observer);
+  precompute->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, observer);
   precompute->SetVisibilityMaskBits(100);
   precompute->Update();
   Check(observer->GetError() && precompute->GetPolyDataOutput()->GetNumberOfPoints() == 0,
