@@ -69,7 +69,7 @@ struct Caps
 struct MaskSettings
 {
   int Side = 0;
-  int RaysSide = 2;
+  int RaysSide = 1;
 };
 
 // Casts the rays of a range of receiving points of one surface and writes their caps.

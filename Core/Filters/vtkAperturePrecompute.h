@@ -204,9 +204,12 @@ public:
    * grid in the point's tangent frame (cell k at bit k % 8 of component k / 8), 1 for open: a
    * cell is open when at least half of its VisibilityMaskRaysPerCell rays, on a stratified
    * sub-grid of the cell, escape, under the same contact and self-hit rules as the aperture's
-   * rays. They cost VisibilityMaskBits × VisibilityMaskRaysPerCell rays a point more (1024 at
-   * the defaults, four times the aperture's 256). Points that cast no rays get a closed mask
-   * (no-data) or an open one (points on no polygon), as their apertures are.
+   * rays. They cost VisibilityMaskBits × VisibilityMaskRaysPerCell rays a point more: 256 at the
+   * defaults, 2.0 times the time of the apertures alone on the bunny. The cells' size, not their
+   * rays, limits the accuracy (bunny, light at 60°, r = 0.064, 95th-percentile error: 26% with
+   * 1, 4 or 9 rays a cell, which cost 2.0, 4.5 and 7.6 times; 60% with 64 cells, 11% with 1024).
+   * Points that cast no rays get a closed mask (no-data) or an open one (points on no polygon),
+   * as their apertures are.
    */
   vtkSetMacro(ComputeVisibilityMask, bool);
   vtkGetMacro(ComputeVisibilityMask, bool);
@@ -216,7 +219,7 @@ public:
   ///@{
   /**
    * Cells of the mask: 64, 144, 256 (default, 32 bytes a point), 400, 576, 784 or 1024; rays per
-   * cell: 1, 4 (default), 9 or 16. Other values are an error when the mask is asked for.
+   * cell: 1 (default), 4, 9 or 16. Other values are an error when the mask is asked for.
    */
   vtkSetMacro(VisibilityMaskBits, int);
   vtkGetMacro(VisibilityMaskBits, int);
@@ -372,7 +375,7 @@ protected:
   bool ComputeHorizonAngles = false;
   bool ComputeVisibilityMask = false;
   int VisibilityMaskBits = 256;
-  int VisibilityMaskRaysPerCell = 4;
+  int VisibilityMaskRaysPerCell = 1;
   double FeatureAngle = 60.0;
   double MaximumEdgeLength = 0.0;
   int AccelerationStructure = AUTOMATIC;

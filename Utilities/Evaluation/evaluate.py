@@ -19,6 +19,8 @@ that an unoccluded light at normal incidence gives 1, is computed by:
 - horizon (height fields): vtkHorizonLighting.LightTransfer on the sweep's 32 horizons as the
   GPU gets them (8 bits a sector; the mapper matches it within 0.5/255,
   TestApertureLightingMapperHorizons);
+- visibility mask (meshes): vtkVisibilityMask.LightTransfer on the precompute's 256-cell mask
+  (one ray a cell), on the CPU: the mappers do not shade with it yet;
 - SH PRT, order 6 (bands 0-5): visibility x cosine projected per vertex from the k = 1026
   visibility matrix, the light's cap projected analytically (Funk-Hecke);
 - visibility matrix, k = 258: (1/pi) sum_j M_ij L_j w_j with the cap's radiance split over the
@@ -68,13 +70,13 @@ import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL factory)
 
 from aperturelighting import (vtkAperturePrecompute, vtkApertureReference, vtkGDALDEMReader,
                               vtkHorizonLighting, vtkLightSphere, vtkOcclusionQueryVisibility,
-                              vtkSphericalCap, vtkTerrainRGBReader)
+                              vtkSphericalCap, vtkTerrainRGBReader, vtkVisibilityMask)
 
 RADII = (0.001, 0.064, 0.314, 0.785)
 ELEVATIONS = (60.0, 30.0, 8.0)
 AZIMUTH = 225.0
-METHODS = ("AAL exact", "AAL exact (moment)", "horizon", "smoothstep", "simplified",
-           "bent normal", "SH PRT order 6", "visibility k=258")
+METHODS = ("AAL exact", "AAL exact (moment)", "horizon", "visibility mask", "smoothstep",
+           "simplified", "bent normal", "SH PRT order 6", "visibility k=258")
 SHADING = {"AAL exact": (vtkSphericalCap.EXACT, vtkSphericalCap.CENTROID),
            "AAL exact (moment)": (vtkSphericalCap.EXACT, vtkSphericalCap.MOMENT),
            "smoothstep": (vtkSphericalCap.SMOOTHSTEP, vtkSphericalCap.CENTROID),
@@ -208,15 +210,17 @@ class Scene:
     def __init__(self, name, surface, up, rays, samples, grid=None):
         self.name, self.surface, self.up, self.samples = name, surface, up, samples
         start = time.time()
-        self.horizons = None
+        self.horizons, self.mask = None, None
         if grid:
             self.precompute_grid(*grid)
         else:
             precompute = vtkAperturePrecompute()
             precompute.SetInputData(surface)
             precompute.SetNumberOfRays(rays)
+            precompute.ComputeVisibilityMaskOn()
             precompute.Update()
             self.keep_caps(precompute.GetOutput().GetPointData())
+            self.mask = precompute.GetOutput().GetPointData().GetArray("VisibilityMask")
         visibility = vtkOcclusionQueryVisibility()
         visibility.SetInputData(surface)
         visibility.SetBackendToRayCast()
@@ -265,6 +269,13 @@ class Scene:
                 vtk_to_numpy(pd.GetArray("ReferenceNoise")).astype(float))
 
     def method(self, name, direction, radius):
+        if name == "visibility mask":
+            if self.mask is None:
+                return None
+            transfer = vtkVisibilityMask.LightTransfer
+            d = list(direction)
+            return np.array([transfer(self.mask, i, n, d, radius)
+                             for i, n in enumerate(self.normals.tolist())])
         if name == "horizon":
             if self.horizons is None:
                 return None
@@ -445,7 +456,7 @@ def main():
             failures.append(where + ": the visibility matrix is off by "
                             f"{100 * m['visibility k=258']['mean']:.1f}%")
         # A mode beyond one cap is never worse than the cap beyond the reference's noise.
-        for new in ("horizon",):
+        for new in ("horizon", "visibility mask"):
             for stat in ("mean", "p95"):
                 if new in m and m[new][stat] > m["AAL exact"][stat] + cell["noise"] + 0.01:
                     failures.append(f"{where}: {new} {stat} {100 * m[new][stat]:.1f}% is worse "
