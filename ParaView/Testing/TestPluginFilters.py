@@ -45,6 +45,13 @@ def main(plugin, data, work):
     check(radius is not None and np.allclose(radius, math.pi / 2, atol=1e-6),
           "sphere: ApertureRadius is pi/2 everywhere")
 
+    # Visibility masks: none on the sphere's outside is closed.
+    masked = pvs.AperturePrecompute(Input=sphere, NumberOfRays=64, ComputeVisibilityMask=1,
+                                    VisibilityMaskBits=144)
+    mask = point_array(masked, "VisibilityMask")
+    check(mask is not None and mask.shape[1] == 18 and (mask == 255).all(),
+          "sphere: VisibilityMask of 144 cells, every one open")
+
     # The bunny: the apertures' ambient occlusion against the reference's sky (same definition,
     # independent rays: stratified 1024 against Monte-Carlo 1024).
     bunny = pvs.OpenDataFile(os.path.join(data, "stanford-bunny.obj"))
