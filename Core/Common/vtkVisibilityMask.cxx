@@ -182,7 +182,7 @@ int vtkVisibilityMask::GetSide(int bits)
 //------------------------------------------------------------------------------
 void vtkVisibilityMask::Frame(const double n[3], double t[3], double b[3])
 {
-  const double sign = std::copysign(1.0, n[2]);
+  const double sign = n[2] >= 0.0 ? 1.0 : -1.0; // as the GLSL twin decides it
   const double a = -1.0 / (sign + n[2]);
   const double c = n[0] * n[1] * a;
   t[0] = 1.0 + sign * n[0] * n[0] * a;
@@ -298,6 +298,14 @@ double vtkVisibilityMask::SkyTransfer(
   return bytes.empty()
     ? 0.0
     : SkyTransfer(n, bytes.data(), 8 * static_cast<int>(bytes.size()), 0.0, 0.0, cosineWeighted);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkVisibilityMask::GetGLSLConstants()
+{
+  return "// vtkVisibilityMask's constants (vtkVisibilityMask::GetGLSLConstants()).\n"
+         "const int visibilityMaskLightSamples = " +
+    std::to_string(LightSamples()) + ";\n";
 }
 
 //------------------------------------------------------------------------------

@@ -45,6 +45,8 @@
 #include "vtkObject.h"
 #include "vtkWrappingHints.h" // For VTK_WRAPEXCLUDE
 
+#include <string> // For std::string
+
 class vtkDataArray;
 
 class VTKAPERTURELIGHTINGCORE_EXPORT vtkVisibilityMask : public vtkObject
@@ -86,6 +88,12 @@ public:
    * Stratified directions of a light cap that LightTransfer() sums.
    */
   static int LightSamples() { return 64; }
+
+  /**
+   * The GLSL declarations of the sample count, which the GLSL twin
+   * (vtkVisibilityMaskGLSL.glsl, in the rendering module) needs before its source.
+   */
+  static std::string GetGLSLConstants();
 
   /**
    * Irradiance at a point with normal n and mask (bits/8 bytes) from a light of angular radius
