@@ -12,6 +12,7 @@
 // one texel per case) for random normals, lights of every size and wall-like 256-cell masks, and
 // bad input, and compares with the C++ values.
 
+#include "vtkApertureGLSLEvaluator.h"
 #include "vtkApertureTestHarness.h"
 #include "vtkSphericalCap.h"
 #include "vtkSphericalCapGLSL.h"
@@ -21,15 +22,8 @@
 #include "vtkMath.h"
 #include "vtkMinimalStandardRandomSequence.h"
 #include "vtkNew.h"
-#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
-#include "vtkOpenGLRenderWindow.h"
-#include "vtkOpenGLShaderCache.h"
-#include "vtkOpenGLState.h"
-#include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
-#include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 #include <algorithm>
 #include <cmath>
@@ -162,69 +156,12 @@ void Expected(const Case& c, int pass, double out[4])
     : -1.0;
   out[2] = out[3] = 0.0;
 }
-
-vtkSmartPointer<vtkTextureObject> Upload(
-  vtkOpenGLRenderWindow* win, int width, int height, std::vector<float>& data)
-{
-  auto tex = vtkSmartPointer<vtkTextureObject>::New();
-  tex->SetContext(win);
-  tex->Create2DFromRaw(width, height, 4, VTK_FLOAT, data.data());
-  return tex;
-}
-
-// Renders one pass of the evaluator into a float target and reads it back.
-std::vector<float> Evaluate(vtkOpenGLRenderWindow* win, vtkOpenGLQuadHelper& quad,
-  vtkTextureObject* textures[3], const std::vector<float>& cosines, int pass, int height)
-{
-  vtkNew<vtkTextureObject> target;
-  target->SetContext(win);
-  target->Create2D(Width, height, 4, VTK_FLOAT, false);
-  vtkNew<vtkOpenGLFramebufferObject> fbo;
-  fbo->SetContext(win);
-  vtkOpenGLState* state = win->GetState();
-  state->PushFramebufferBindings();
-  fbo->Bind();
-  fbo->AddColorAttachment(0, target);
-  fbo->ActivateDrawBuffer(0);
-  fbo->ActivateReadBuffer(0);
-  std::vector<float> result(4 * Width * height, std::numeric_limits<float>::quiet_NaN());
-  if (fbo->StartNonOrtho(Width, height))
-  {
-    state->vtkglViewport(0, 0, Width, height);
-    state->vtkglDisable(GL_DEPTH_TEST);
-    state->vtkglDisable(GL_BLEND);
-    state->vtkglDisable(GL_SCISSOR_TEST);
-    win->GetShaderCache()->ReadyShaderProgram(quad.Program);
-    const char* names[3] = { "normals", "lights", "maskTexels" };
-    for (int t = 0; t < 3; ++t)
-    {
-      textures[t]->Activate();
-      quad.Program->SetUniformi(names[t], textures[t]->GetTextureUnit());
-    }
-    quad.Program->SetUniform1fv("visibilityMaskCellCosines", Cells, cosines.data());
-    quad.Program->SetUniformi("pass", pass);
-    quad.Render();
-    glReadPixels(0, 0, Width, height, GL_RGBA, GL_FLOAT, result.data());
-    for (int t = 0; t < 3; ++t)
-    {
-      textures[t]->Deactivate();
-    }
-  }
-  state->PopFramebufferBindings();
-  return result;
-}
 }
 
 int TestVisibilityMaskGLSL(int, char*[])
 {
-  vtkNew<vtkRenderWindow> renWin;
-  renWin->SetOffScreenRendering(1);
-  renWin->SetSize(16, 16);
-  vtkNew<vtkRenderer> renderer;
-  renWin->AddRenderer(renderer);
-  renWin->Render();
-  auto* win = vtkOpenGLRenderWindow::SafeDownCast(renWin);
-  win->MakeCurrent();
+  vtkApertureTest::GLSLEvaluator evaluator;
+  vtkOpenGLRenderWindow* win = evaluator.GetWindow();
 
   const std::vector<Case> cases = MakeCases();
   const int height = static_cast<int>(cases.size()) / Width;
@@ -240,9 +177,11 @@ int TestVisibilityMaskGLSL(int, char*[])
         static_cast<float>(cases[i].Mask[2 * h] | (cases[i].Mask[2 * h + 1] << 8));
     }
   }
-  vtkSmartPointer<vtkTextureObject> uploaded[3] = { Upload(win, Width, height, normals),
-    Upload(win, Width, height, lights), Upload(win, Width * Cells / 64, height, masks) };
-  vtkTextureObject* textures[3] = { uploaded[0], uploaded[1], uploaded[2] };
+  const vtkSmartPointer<vtkTextureObject> uploaded[3] = { evaluator.Upload(Width, height, normals),
+    evaluator.Upload(Width, height, lights), evaluator.Upload(Width * Cells / 64, height, masks) };
+  const std::vector<std::pair<const char*, vtkTextureObject*>> textures = {
+    { "normals", uploaded[0] }, { "lights", uploaded[1] }, { "maskTexels", uploaded[2] }
+  };
   std::vector<float> cosines(Cells);
   for (int cell = 0; cell < Cells; ++cell)
   {
@@ -264,7 +203,12 @@ int TestVisibilityMaskGLSL(int, char*[])
   int cellsDiffer = 0;
   for (int pass = 0; pass < 2; ++pass)
   {
-    const std::vector<float> result = Evaluate(win, quad, textures, cosines, pass, height);
+    const std::vector<float> result = evaluator.Run(quad, Width, height, textures,
+      [pass, &cosines](vtkShaderProgram* program)
+      {
+        program->SetUniform1fv("visibilityMaskCellCosines", Cells, cosines.data());
+        program->SetUniformi("pass", pass);
+      });
     double worst[4] = { 0, 0, 0, 0 };
     for (size_t i = 0; i < cases.size(); ++i)
     {
