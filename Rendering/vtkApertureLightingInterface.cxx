@@ -86,10 +86,7 @@ std::string ArrayProblem(vtkDataSet* data, const std::string& name, int componen
   return std::string();
 }
 
-// The most sectors the shaders take; more are resampled.
-constexpr int MaximumShaderSectors = 32;
-
-// Horizons of `sectors` (at most MaximumShaderSectors) as the GPU gets them: 8-bit codes of
+// Horizons of `sectors` (at most GetMaximumShaderSectors()) as the GPU gets them: 8-bit codes of
 // `in`'s D values, resampled linearly in azimuth to `sectors` when D differs.
 void EncodeHorizons(const std::vector<float>& in, int sectors, unsigned char* codes)
 {
@@ -477,7 +474,7 @@ int vtkApertureLightingInterface::CheckHorizons(vtkDataSet* data)
   this->CheckedHorizons = array;
   this->CheckedHorizonsTime = time;
   this->CheckedSectors =
-    problem.empty() ? std::min(array->GetNumberOfComponents(), MaximumShaderSectors) : 0;
+    problem.empty() ? std::min(array->GetNumberOfComponents(), GetMaximumShaderSectors()) : 0;
   return this->CheckedSectors;
 }
 

@@ -248,9 +248,11 @@ public:
    * For the mappers: the vertex attributes that carry horizons per vertex
    * (GetHorizonAttributeName(i), i < GetNumberOfHorizonAttributes(sectors)), and their values for
    * a dataset: three 8-bit codes per float (exact integers), four floats per attribute, resampled
-   * to `sectors`; open (−π/2) where the dataset has no usable horizons.
+   * to `sectors` (at most GetMaximumShaderSectors(), 32); open (−π/2) where the dataset has no
+   * usable horizons.
    */
   static int GetNumberOfHorizonAttributes(int sectors);
+  static int GetMaximumShaderSectors() { return 32; }
   static std::string GetHorizonAttributeName(int i);
   void PackHorizonAttributes(
     vtkDataSet* data, int sectors, std::vector<vtkSmartPointer<vtkFloatArray>>& attributes);

@@ -116,7 +116,8 @@ void vtkApertureLightingMapper::MapApertureAttributes(vtkPolyData* input)
       (this->State & InputTCoords) ? input->GetPointData()->GetTCoords()->GetName() : "" },
   };
   // The packed horizons are named as their attributes (in the packed copy only).
-  const int horizonAttributes = vtkApertureLightingInterface::GetNumberOfHorizonAttributes(32);
+  const int horizonAttributes = vtkApertureLightingInterface::GetNumberOfHorizonAttributes(
+    vtkApertureLightingInterface::GetMaximumShaderSectors());
   for (int i = 0; i < horizonAttributes; ++i)
   {
     const std::string name = vtkApertureLightingInterface::GetHorizonAttributeName(i);

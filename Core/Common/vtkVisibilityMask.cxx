@@ -112,6 +112,36 @@ const std::vector<double>& CellCosines(int side)
   return table;
 }
 
+// The cell of unit w in the frame (t, b, n) of a side × side grid, or -1 below its plane.
+int CellInFrame(
+  const double t[3], const double b[3], const double n[3], const double w[3], int side)
+{
+  const double z = vtkMath::Dot(w, n);
+  if (!(z >= 0.0) || side < 1)
+  {
+    return -1;
+  }
+  const double s = 1.0 / std::sqrt(1.0 + std::min(1.0, z));
+  double a, c;
+  DiskToSquare(vtkMath::Dot(w, t) * s, vtkMath::Dot(w, b) * s, a, c);
+  const int i = std::min(side - 1, std::max(0, static_cast<int>(0.5 * (a + 1.0) * side)));
+  const int j = std::min(side - 1, std::max(0, static_cast<int>(0.5 * (c + 1.0) * side)));
+  return i + side * j;
+}
+
+// The direction at square coordinates (u, v) in the frame (t, b, n).
+void DirectionInFrame(
+  const double t[3], const double b[3], const double n[3], double u, double v, double w[3])
+{
+  double x, y;
+  SquareToDisk(2.0 * u - 1.0, 2.0 * v - 1.0, x, y);
+  const double rho2 = std::min(1.0, x * x + y * y), s = std::sqrt(2.0 - rho2);
+  for (int k = 0; k < 3; ++k)
+  {
+    w[k] = x * s * t[k] + y * s * b[k] + (1.0 - rho2) * n[k];
+  }
+}
+
 bool IsOpen(const unsigned char* mask, int cell)
 {
   return (mask[cell / 8] >> (cell % 8)) & 1;
@@ -123,8 +153,9 @@ void LightSums(const double n[3], const unsigned char* mask, int side, const dou
   double sums[2])
 {
   const int samples = vtkVisibilityMask::LightSamples();
-  double t[3], b[3];
+  double t[3], b[3], nt[3], nb[3]; // the light's frame, the normal's
   vtkVisibilityMask::Frame(l, t, b);
+  vtkVisibilityMask::Frame(n, nt, nb);
   const double halfSin = std::sin(0.5 * rl), capArea = 4.0 * Pi * halfSin * halfSin;
   const double golden = Pi * (3.0 - std::sqrt(5.0));
   for (int i = 0; i < samples; ++i)
@@ -139,7 +170,7 @@ void LightSums(const double n[3], const unsigned char* mask, int side, const dou
       w[k] = cosT * l[k] + sinT * (c * t[k] + s * b[k]);
     }
     const double z = vtkMath::Dot(n, w);
-    const int cell = vtkVisibilityMask::CellOf(n, w, side);
+    const int cell = CellInFrame(nt, nb, n, w, side);
     if (z > 0.0 && cell >= 0 && IsOpen(mask, cell))
     {
       sums[0] += capArea / samples;
@@ -198,29 +229,32 @@ int vtkVisibilityMask::CellOf(const double n[3], const double w[3], int side)
 {
   double t[3], b[3];
   Frame(n, t, b);
-  const double z = vtkMath::Dot(w, n);
-  if (!(z >= 0.0) || side < 1)
-  {
-    return -1;
-  }
-  const double s = 1.0 / std::sqrt(1.0 + std::min(1.0, z));
-  double a, c;
-  DiskToSquare(vtkMath::Dot(w, t) * s, vtkMath::Dot(w, b) * s, a, c);
-  const int i = std::min(side - 1, std::max(0, static_cast<int>(0.5 * (a + 1.0) * side)));
-  const int j = std::min(side - 1, std::max(0, static_cast<int>(0.5 * (c + 1.0) * side)));
-  return i + side * j;
+  return CellInFrame(t, b, n, w, side);
 }
 
 //------------------------------------------------------------------------------
 void vtkVisibilityMask::Direction(const double n[3], double u, double v, double w[3])
 {
-  double t[3], b[3], x, y;
+  double t[3], b[3];
   Frame(n, t, b);
-  SquareToDisk(2.0 * u - 1.0, 2.0 * v - 1.0, x, y);
-  const double rho2 = std::min(1.0, x * x + y * y), s = std::sqrt(2.0 - rho2);
-  for (int k = 0; k < 3; ++k)
+  DirectionInFrame(t, b, n, u, v, w);
+}
+
+//------------------------------------------------------------------------------
+void vtkVisibilityMask::CellRayDirections(
+  const double n[3], int side, int raysSide, std::vector<float>& directions)
+{
+  double t[3], b[3];
+  Frame(n, t, b);
+  const int perCell = raysSide * raysSide, rays = side * side * perCell;
+  directions.resize(3 * static_cast<size_t>(rays));
+  for (int q = 0; q < rays; ++q)
   {
-    w[k] = x * s * t[k] + y * s * b[k] + (1.0 - rho2) * n[k];
+    const int cell = q / perCell, sub = q % perCell;
+    double w[3];
+    DirectionInFrame(t, b, n, (cell % side + (sub % raysSide + 0.5) / raysSide) / side,
+      (cell / side + (sub / raysSide + 0.5) / raysSide) / side, w);
+    std::copy(w, w + 3, &directions[3 * q]);
   }
 }
 

@@ -46,6 +46,7 @@
 #include "vtkWrappingHints.h" // For VTK_WRAPEXCLUDE
 
 #include <string> // For std::string
+#include <vector> // For std::vector
 
 class vtkDataArray;
 
@@ -78,6 +79,13 @@ public:
    * u ∈ [i/side, (i + 1)/side)) around unit normal `n`.
    */
   static void Direction(const double n[3], double u, double v, double w[3]);
+
+  /**
+   * The directions a mask's rays take around unit normal `n`: raysSide² per cell on a
+   * stratified sub-grid of the cell, cell by cell (cell q / raysSide² for ray q), 3 floats each.
+   */
+  VTK_WRAPEXCLUDE static void CellRayDirections(
+    const double n[3], int side, int raysSide, std::vector<float>& directions);
 
   /**
    * ∫ n·ω dω over cell `cell` of a side × side grid (the same for every normal).

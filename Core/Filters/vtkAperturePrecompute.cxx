@@ -98,6 +98,7 @@ public:
   {
     vtkApertureRayPacket packet(this->Scene, this->Surface);
     std::vector<int> seen(this->Mask.Side * this->Mask.Side);
+    std::vector<float> directions;
     for (vtkIdType k = begin; k < end; ++k)
     {
       const vtkIdType id = this->Order[k];
@@ -106,7 +107,7 @@ public:
         this->Cast(packet, id);
         if (this->Mask.Side > 0)
         {
-          this->CastMask(packet, id, seen);
+          this->CastMask(packet, id, seen, directions);
         }
       }
       else
@@ -167,29 +168,27 @@ private:
   }
 
   // The point's mask: RaysSide² rays on a sub-grid of each cell; open where half escape.
-  void CastMask(vtkApertureRayPacket& packet, vtkIdType id, std::vector<int>& seen) const
+  void CastMask(vtkApertureRayPacket& packet, vtkIdType id, std::vector<int>& seen,
+    std::vector<float>& directions) const
   {
     const float* nrm = this->Surface.GetNormal(id);
     const double n[3] = { nrm[0], nrm[1], nrm[2] };
     const int side = this->Mask.Side, per = this->Mask.RaysSide, cells = side * side;
     const int rays = cells * per * per;
+    vtkVisibilityMask::CellRayDirections(n, side, per, directions);
     std::fill(seen.begin(), seen.end(), 0);
     for (int first = 0; first < rays; first += Lanes)
     {
       for (int lane = 0; lane < Lanes; ++lane)
       {
-        const int q = first + lane, cell = q / (per * per), sub = q % (per * per);
-        if (q >= rays)
+        if (first + lane < rays)
+        {
+          packet.Set(lane, id, &directions[3 * (first + lane)], this->MaximumDistance);
+        }
+        else
         {
           packet.Clear(lane);
-          continue;
         }
-        double w[3];
-        vtkVisibilityMask::Direction(n, (cell % side + (sub % per + 0.5) / per) / side,
-          (cell / side + (sub / per + 0.5) / per) / side, w);
-        const float direction[3] = { static_cast<float>(w[0]), static_cast<float>(w[1]),
-          static_cast<float>(w[2]) };
-        packet.Set(lane, id, direction, this->MaximumDistance);
       }
       packet.Trace();
       for (int lane = 0; lane < Lanes && first + lane < rays; ++lane)

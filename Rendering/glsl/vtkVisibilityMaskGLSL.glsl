@@ -40,12 +40,9 @@ vec2 visibilityMaskDiskToSquare(vec2 p)
   return vec2(-r * (6.0 * quarter - phi) / quarter, -r);
 }
 
-// The cell of unit direction w around unit normal n, or -1 below the tangent plane.
-int visibilityMaskCellOf(vec3 n, vec3 w)
+// The cell of unit direction w in the frame (t, b, n), or -1 below its plane.
+int visibilityMaskCellInFrame(vec3 t, vec3 b, vec3 n, vec3 w)
 {
-  vec3 t;
-  vec3 b;
-  visibilityMaskFrame(n, t, b);
   float z = dot(w, n);
   if (!(z >= 0.0))
   {
@@ -56,6 +53,15 @@ int visibilityMaskCellOf(vec3 n, vec3 w)
   int i = clamp(int(0.5 * (square.x + 1.0) * side), 0, VISIBILITY_MASK_SIDE - 1);
   int j = clamp(int(0.5 * (square.y + 1.0) * side), 0, VISIBILITY_MASK_SIDE - 1);
   return i + VISIBILITY_MASK_SIDE * j;
+}
+
+// The cell of unit direction w around unit normal n, or -1 below the tangent plane.
+int visibilityMaskCellOf(vec3 n, vec3 w)
+{
+  vec3 t;
+  vec3 b;
+  visibilityMaskFrame(n, t, b);
+  return visibilityMaskCellInFrame(t, b, n, w);
 }
 
 bool visibilityMaskIsOpen(int cell)
@@ -81,7 +87,10 @@ float visibilityMaskLightTransfer(vec3 n, vec3 l, float rl, out vec2 coverage)
   rl = sphericalCapClampLightRadius(rl);
   vec3 t;
   vec3 b;
+  vec3 nt;
+  vec3 nb;
   visibilityMaskFrame(l, t, b);
+  visibilityMaskFrame(n, nt, nb);
   float halfSin = sin(0.5 * rl);
   float capArea = 4.0 * sphericalCapPi * halfSin * halfSin;
   float golden = sphericalCapPi * (3.0 - sqrt(5.0));
@@ -92,7 +101,7 @@ float visibilityMaskLightTransfer(vec3 n, vec3 l, float rl, out vec2 coverage)
     float angle = golden * float(i);
     vec3 w = (1.0 - down) * l + sinT * (cos(angle) * t + sin(angle) * b);
     float z = dot(n, w);
-    int cell = visibilityMaskCellOf(n, w);
+    int cell = visibilityMaskCellInFrame(nt, nb, n, w);
     if (z > 0.0 && cell >= 0 && visibilityMaskIsOpen(cell))
     {
       coverage += vec2(1.0, z) * (capArea / float(visibilityMaskLightSamples));
