@@ -99,6 +99,16 @@ void EncodeHorizons(const std::vector<float>& in, int sectors, unsigned char* co
   }
 }
 
+// Point p's horizons as the GPU gets them (EncodeHorizons()), read through the scratch
+// `tuple` and `in`, sized for the array's components.
+void EncodePoint(vtkDataArray* horizons, vtkIdType p, int sectors, std::vector<double>& tuple,
+  std::vector<float>& in, unsigned char* codes)
+{
+  horizons->GetTuple(p, tuple.data());
+  std::copy(tuple.begin(), tuple.end(), in.begin());
+  EncodeHorizons(in, sectors, codes);
+}
+
 // Apertures reach the fragment shader as varyings in view coordinates, or as texture
 // coordinates in the per-texel mode (from the input's, or from the model coordinates).
 void ReplaceApertureVaryings(std::string& vs, std::string& gs, bool perTexel, bool inputTCoords)
@@ -516,10 +526,12 @@ void vtkApertureLightingInterface::PackHorizonAttributes(
   {
     if (horizons)
     {
-      horizons->GetTuple(p, tuple.data());
-      std::copy(tuple.begin(), tuple.end(), in.begin());
+      EncodePoint(horizons, p, sectors, tuple, in, codes.data());
     }
-    EncodeHorizons(in, sectors, codes.data());
+    else
+    {
+      EncodeHorizons(in, sectors, codes.data());
+    }
     for (int k = 0; k < sectors; ++k)
     {
       const int word = k / 3;
@@ -944,9 +956,8 @@ bool vtkApertureLightingInterface::UploadHorizonTexture(vtkRenderer* renderer)
     std::fill(texels.begin(), texels.end(), 0);
     for (vtkIdType t = 0; t < static_cast<vtkIdType>(rows) * dims[0]; ++t)
     {
-      horizons->GetTuple(static_cast<vtkIdType>(row) * dims[0] + t, tuple.data());
-      std::copy(tuple.begin(), tuple.end(), in.begin());
-      EncodeHorizons(in, sectors, codes.data());
+      EncodePoint(
+        horizons, static_cast<vtkIdType>(row) * dims[0] + t, sectors, tuple, in, codes.data());
       for (int k = 0; k < sectors; ++k)
       {
         texels[(k / 4) * layerSize + 4 * t + k % 4] = codes[k];

@@ -27,21 +27,6 @@ namespace
 constexpr double Pi = vtkMath::Pi();
 constexpr double HalfPi = 0.5 * vtkMath::Pi();
 
-// Unit copies of a direction; false for a zero-length or non-finite one.
-bool Unit(const double v[3], double u[3])
-{
-  const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-  if (!(length > 0.0) || !std::isfinite(length))
-  {
-    return false;
-  }
-  for (int k = 0; k < 3; ++k)
-  {
-    u[k] = v[k] / length;
-  }
-  return true;
-}
-
 // The elevation of the tangent plane of normal n along azimuth (cos φ, sin φ); normals are taken
 // as facing up, as a height field's are.
 double TangentElevation(const double n[3], double c, double s)
@@ -176,7 +161,8 @@ double vtkHorizonLighting::LightTransfer(const double normal[3], const float* ho
 {
   double n[3], l[3];
   double sums[2] = { 0.0, 0.0 }; // solid angle, ∫ n·ω dω
-  const bool usable = sectors >= 1 && !std::isnan(rl) && Unit(normal, n) && Unit(direction, l);
+  const bool usable = sectors >= 1 && !std::isnan(rl) && vtkSphericalCap::UnitAxis(normal, n) &&
+    vtkSphericalCap::UnitAxis(direction, l);
   if (usable)
   {
     rl = vtkSphericalCap::ClampLightRadius(rl);
@@ -198,7 +184,8 @@ double vtkHorizonLighting::SkyTransfer(const double normal[3], const float* hori
   double coverage, double cosineCoverage, bool cosineWeighted)
 {
   double n[3];
-  if (sectors < 1 || std::isnan(coverage) || std::isnan(cosineCoverage) || !Unit(normal, n))
+  if (sectors < 1 || std::isnan(coverage) || std::isnan(cosineCoverage) ||
+    !vtkSphericalCap::UnitAxis(normal, n))
   {
     return 0.0;
   }

@@ -129,21 +129,6 @@ double SimplifiedRamp(double rp, double rl, double d)
   return std::min(1.0, std::max(0.0, std::sin(0.5 * (d + sum)) * std::sin(0.5 * (sum - d)) / den));
 }
 
-// Normalises v into u; false for zero-length or non-finite vectors.
-bool UnitAxis(const double v[3], double u[3])
-{
-  const double n = vtkMath::Norm(v);
-  if (!(n > 0.0) || !std::isfinite(n))
-  {
-    return false;
-  }
-  for (int i = 0; i < 3; ++i)
-  {
-    u[i] = v[i] / n;
-  }
-  return true;
-}
-
 // How caps of radii r1, r2 with axes d apart meet.
 enum class LensCase
 {
@@ -291,7 +276,8 @@ void vtkSphericalCap::IntersectionMoment(
   double u1[3], u2[3];
   r1 = ClampAngle(r1);
   r2 = ClampAngle(r2);
-  if (std::isnan(r1) || std::isnan(r2) || !UnitAxis(a1, u1) || !UnitAxis(a2, u2))
+  if (std::isnan(r1) || std::isnan(r2) || !vtkSphericalCap::UnitAxis(a1, u1) ||
+    !vtkSphericalCap::UnitAxis(a2, u2))
   {
     return;
   }
@@ -498,11 +484,12 @@ double ShadeInputs(int shading, int lambert, const double n[3], const double ben
   rp = ClampAngle(rp);
   rl = ClampAngle(rl);
   double un[3], ub[3], ul[3];
-  if (std::isnan(rp) || std::isnan(rl) || !UnitAxis(bent, ub) || !UnitAxis(l, ul))
+  if (std::isnan(rp) || std::isnan(rl) || !vtkSphericalCap::UnitAxis(bent, ub) ||
+    !vtkSphericalCap::UnitAxis(l, ul))
   {
     return 0.0;
   }
-  if (!UnitAxis(n, un))
+  if (!vtkSphericalCap::UnitAxis(n, un))
   {
     un[0] = un[1] = un[2] = 0.0;
   }
@@ -546,6 +533,21 @@ double vtkSphericalCap::SkyTransfer(
 void vtkSphericalCap::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+}
+
+//------------------------------------------------------------------------------
+bool vtkSphericalCap::UnitAxis(const double v[3], double u[3])
+{
+  const double n = vtkMath::Norm(v);
+  if (!(n > 0.0) || !std::isfinite(n))
+  {
+    return false;
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    u[i] = v[i] / n;
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -156,6 +156,12 @@ public:
   static double ClampLightRadius(double radius);
 
   /**
+   * Normalises an axis into u; false (u untouched) for a zero-length or non-finite one, which
+   * this class and vtkHorizonLighting and vtkVisibilityMask treat as no axis at all.
+   */
+  static bool UnitAxis(const double v[3], double u[3]);
+
+  /**
    * Radiance of a light of angular radius rl (clamped by ClampLightRadius()) and intensity 1:
    * 1/(π sin²rl), so that the unoccluded light at normal incidence gives an irradiance of 1.
    * LightTransfer() and the references use it; the shaders compute the same from half angles.

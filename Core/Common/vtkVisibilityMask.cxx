@@ -27,20 +27,6 @@ namespace
 constexpr double Pi = vtkMath::Pi();
 constexpr double QuarterPi = 0.25 * vtkMath::Pi();
 
-bool Unit(const double v[3], double u[3])
-{
-  const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-  if (!(length > 0.0) || !std::isfinite(length))
-  {
-    return false;
-  }
-  for (int k = 0; k < 3; ++k)
-  {
-    u[k] = v[k] / length;
-  }
-  return true;
-}
-
 // Shirley and Chiu's concentric map from the square [-1, 1]² to the unit disk, and back.
 void SquareToDisk(double a, double b, double& x, double& y)
 {
@@ -275,7 +261,8 @@ double vtkVisibilityMask::LightTransfer(const double normal[3], const unsigned c
   double n[3], l[3];
   double sums[2] = { 0.0, 0.0 };
   const int side = GetSide(bits);
-  const bool usable = side > 0 && mask && !std::isnan(rl) && Unit(normal, n) && Unit(direction, l);
+  const bool usable = side > 0 && mask && !std::isnan(rl) && vtkSphericalCap::UnitAxis(normal, n) &&
+    vtkSphericalCap::UnitAxis(direction, l);
   if (usable)
   {
     rl = vtkSphericalCap::ClampLightRadius(rl);
@@ -298,7 +285,8 @@ double vtkVisibilityMask::SkyTransfer(const double normal[3], const unsigned cha
 {
   double n[3];
   const int side = GetSide(bits);
-  if (side == 0 || !mask || std::isnan(coverage) || std::isnan(cosineCoverage) || !Unit(normal, n))
+  if (side == 0 || !mask || std::isnan(coverage) || std::isnan(cosineCoverage) ||
+    !vtkSphericalCap::UnitAxis(normal, n))
   {
     return 0.0;
   }
