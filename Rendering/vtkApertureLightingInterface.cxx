@@ -10,6 +10,7 @@
 =========================================================================*/
 #include "vtkApertureLightingInterface.h"
 
+#include "vtkApertureLightCapGLSL.h"
 #include "vtkApertureLightingFS.h"
 #include "vtkApertureText.h"
 #include "vtkHorizonLighting.h"
@@ -17,6 +18,9 @@
 #include "vtkHorizonLightingGLSL.h"
 #include "vtkSphericalCap.h"
 #include "vtkSphericalCapGLSL.h"
+#include "vtkVisibilityMask.h"
+#include "vtkVisibilityMaskGLSL.h"
+#include "vtkVisibilityMaskVS.h"
 
 #include "vtkActor.h"
 #include "vtkArrayDispatch.h"
@@ -46,6 +50,7 @@
 #include "vtkProperty.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtk_glew.h"
 
 #include <algorithm>
@@ -107,6 +112,64 @@ void EncodePoint(vtkDataArray* horizons, vtkIdType p, int sectors, std::vector<d
   horizons->GetTuple(p, tuple.data());
   std::copy(tuple.begin(), tuple.end(), in.begin());
   EncodeHorizons(in, sectors, codes);
+}
+
+// A mask of inBits resampled to outBits (vtkVisibilityMask's grids): a coarse cell is open where
+// at least half the points of its 2 x 2 sub-grid fall in open fine cells.
+void ResampleMask(const unsigned char* in, int inBits, int outBits, unsigned char* out)
+{
+  if (inBits == outBits)
+  {
+    std::copy(in, in + outBits / 8, out);
+    return;
+  }
+  const int inSide = vtkVisibilityMask::GetSide(inBits);
+  const int outSide = vtkVisibilityMask::GetSide(outBits);
+  std::fill(out, out + outBits / 8, 0);
+  for (int cell = 0; cell < outBits; ++cell)
+  {
+    int open = 0;
+    for (int s = 0; s < 4; ++s)
+    {
+      const double u = (cell % outSide + 0.25 + 0.5 * (s % 2)) / outSide;
+      const double v = (cell / outSide + 0.25 + 0.5 * (s / 2)) / outSide;
+      const int fine = static_cast<int>(u * inSide) + inSide * static_cast<int>(v * inSide);
+      open += (in[fine / 8] >> (fine % 8)) & 1;
+    }
+    out[cell / 8] |= static_cast<unsigned char>(open >= 2 ? 1 << (cell % 8) : 0);
+  }
+}
+
+// The vec4 attributes that carry `bytes` bytes, three to a float.
+int AttributesForBytes(int bytes)
+{
+  const int floats = (bytes + 2) / 3; // three bytes in a float's exact integers
+  return (floats + 3) / 4;
+}
+
+// Adds `count` bytes to point p's packed attributes: three to a float, four floats to an
+// attribute.
+void PackBytes(
+  const unsigned char* bytes, int count, const std::vector<float*>& values, vtkIdType p)
+{
+  for (int k = 0; k < count; ++k)
+  {
+    const int three = k / 3;
+    values[three / 4][4 * p + three % 4] += static_cast<float>(bytes[k] << (8 * (k % 3)));
+  }
+}
+
+// A mask's open sums (vtkVisibilityMask::OpenSums()), which do not depend on the lights, for
+// the last float of its attributes (always free: 64, 144 and 256 bits leave one to two):
+// the open cells' count plus 512 times their cosine integral over pi in 15 bits, an exact
+// integer below 2^24.
+float PackOpenSums(const unsigned char* mask, int bits)
+{
+  double sums[2];
+  vtkVisibilityMask::OpenSums(mask, bits, sums);
+  const long count = std::lround(sums[0] * bits / (2.0 * vtkMath::Pi()));
+  const long cosine = std::lround(std::min(1.0, sums[1] / vtkMath::Pi()) * 32767.0);
+  return static_cast<float>(count + 512 * cosine);
 }
 
 // Apertures reach the fragment shader as varyings in view coordinates, or as texture
@@ -175,6 +238,24 @@ std::string LightCall(int lightComplexity, int i)
     "], fragment);\n";
 }
 
+// The cap of light i at a vertex, for the masks, from the same uniforms as LightCall().
+std::string MaskLightCap(int lightComplexity, int i)
+{
+  const std::string n = std::to_string(i);
+  const std::string cap = "apertureLightCap[" + n + "]";
+  if (lightComplexity == 1)
+  {
+    return "sphericalCapCap(vec3(0.0, 0.0, 1.0), " + cap + ".x, " + cap + ".y, " + cap + ".z)";
+  }
+  if (lightComplexity == 2)
+  {
+    return "sphericalCapCap(-lightDirectionVC" + n + ", " + cap + ".x, " + cap + ".y, " + cap +
+      ".z)";
+  }
+  return "apertureLightCapAt(lightDirectionVC" + n + ", " + cap + ", lightPositional" + n +
+    ", lightPositionVC" + n + ", apertureLightWorldRadius[" + n + "], vertexVCVSOutput.xyz)";
+}
+
 // The lighting of main(): the fragment's aperture, its lights, then its colour.
 std::string FragmentImplementation(int lightComplexity, int lightCount)
 {
@@ -229,7 +310,7 @@ vtkApertureLightingInterface::~vtkApertureLightingInterface()
 //------------------------------------------------------------------------------
 void vtkApertureLightingInterface::SetShadingMode(int mode)
 {
-  mode = std::min(std::max(mode, static_cast<int>(EXACT)), static_cast<int>(HORIZON));
+  mode = std::min(std::max(mode, static_cast<int>(EXACT)), static_cast<int>(VISIBILITY_MASK));
   if (mode != this->ShadingMode)
   {
     this->ShadingMode = mode;
@@ -255,7 +336,7 @@ void vtkApertureLightingInterface::SetLambertMode(int mode)
 const char* vtkApertureLightingInterface::GetShadingModeAsString()
 {
   static const char* names[] = { "Exact", "Smoothstep", "Simplified", "BentNormal", "Standard",
-    "Horizon" };
+    "Horizon", "VisibilityMask" };
   return names[this->ShadingMode];
 }
 
@@ -293,6 +374,19 @@ void vtkApertureLightingInterface::SetHorizonAnglesArrayName(const char* name)
   {
     this->HorizonAnglesArrayName = value;
     this->CheckedHorizonsTime = 0;
+    this->ShaderTime.Modified();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingInterface::SetVisibilityMaskArrayName(const char* name)
+{
+  const std::string value = name ? name : "";
+  if (value != this->VisibilityMaskArrayName)
+  {
+    this->VisibilityMaskArrayName = value;
+    this->CheckedMaskTime = 0;
     this->ShaderTime.Modified();
     this->Modified();
   }
@@ -489,27 +583,119 @@ int vtkApertureLightingInterface::CheckHorizons(vtkDataSet* data)
 }
 
 //------------------------------------------------------------------------------
-int vtkApertureLightingInterface::GetNumberOfHorizonAttributes(int sectors)
+namespace
 {
-  const int floats = (sectors + 2) / 3; // three 8-bit codes in a float's exact integers
-  return (floats + 3) / 4;
+// Why a visibility mask array cannot be shaded with, or an empty string.
+std::string MaskProblem(vtkDataSet* data, const std::string& name)
+{
+  vtkDataArray* array = data->GetPointData()->GetArray(name.c_str());
+  if (!array)
+  {
+    return "there is no point-data array named " + vtkApertureText::Quote(name) +
+      " (vtkAperturePrecompute's ComputeVisibilityMask writes it)";
+  }
+  if (!vtkUnsignedCharArray::SafeDownCast(array))
+  {
+    return vtkApertureText::Quote(name) + " is not an unsigned char array";
+  }
+  const int bits = 8 * array->GetNumberOfComponents();
+  if (!vtkVisibilityMask::IsValidBitCount(bits))
+  {
+    return vtkApertureText::Quote(name) + " has " + std::to_string(bits) +
+      " bits a point, which no mask has (64, 144, 256, 400, 576, 784 or 1024)";
+  }
+  if (array->GetNumberOfTuples() != data->GetNumberOfPoints())
+  {
+    return vtkApertureText::Quote(name) + " has " + std::to_string(array->GetNumberOfTuples()) +
+      " tuples for " + std::to_string(data->GetNumberOfPoints()) + " points";
+  }
+  vtkDataArray* normals = data->GetPointData()->GetNormals();
+  if (!normals || normals->GetNumberOfComponents() != 3)
+  {
+    return "the dataset has no point normals, which give a mask its frame";
+  }
+  return std::string();
+}
 }
 
 //------------------------------------------------------------------------------
-std::string vtkApertureLightingInterface::GetHorizonAttributeName(int i)
+int vtkApertureLightingInterface::CheckVisibilityMask(vtkDataSet* data)
 {
-  return "apertureHorizons" + std::to_string(i) + "MC";
+  vtkPointData* pd = data ? data->GetPointData() : nullptr;
+  vtkDataArray* array = pd ? pd->GetArray(this->VisibilityMaskArrayName.c_str()) : nullptr;
+  vtkDataArray* normals = pd ? pd->GetNormals() : nullptr;
+  const vtkMTimeType time = std::max({ data ? data->GetMTime() : 0, array ? array->GetMTime() : 0,
+    normals ? normals->GetMTime() : 0 });
+  if (array && array == this->CheckedMask[0] && normals == this->CheckedMask[1] &&
+    time <= this->CheckedMaskTime)
+  {
+    return this->CheckedMaskBits;
+  }
+  const std::string problem =
+    data ? MaskProblem(data, this->VisibilityMaskArrayName) : "there is no input";
+  this->ReportMask(problem);
+  this->CheckedMask[0] = array;
+  this->CheckedMask[1] = normals;
+  this->CheckedMaskTime = time;
+  this->CheckedMaskBits =
+    problem.empty() ? std::min(8 * array->GetNumberOfComponents(), GetMaximumShaderMaskBits()) : 0;
+  return this->CheckedMaskBits;
 }
 
 //------------------------------------------------------------------------------
-void vtkApertureLightingInterface::PackHorizonAttributes(
-  vtkDataSet* data, int sectors, std::vector<vtkSmartPointer<vtkFloatArray>>& attributes)
+int vtkApertureLightingInterface::CheckPackedLayout(vtkDataSet* data)
+{
+  if (this->ShadingMode == HORIZON)
+  {
+    return this->CheckHorizons(data);
+  }
+  if (this->ShadingMode != VISIBILITY_MASK)
+  {
+    return 0;
+  }
+  if (data && data == this->ApertureImage)
+  {
+    this->ReportMask("masks are per point of a mesh, not per texel of an aperture image");
+    return 0;
+  }
+  return this->CheckVisibilityMask(data);
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingInterface::ReportMask(const std::string& problem)
+{
+  if (!problem.empty() && problem != this->LastMaskProblem)
+  {
+    vtkWarningMacro("Cannot shade with visibility masks: " << problem << "; using the exact cap.");
+  }
+  this->LastMaskProblem = problem;
+}
+
+//------------------------------------------------------------------------------
+int vtkApertureLightingInterface::GetNumberOfPackedAttributes(int layout) const
+{
+  return AttributesForBytes(this->ShadingMode == VISIBILITY_MASK ? layout / 8 : layout);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkApertureLightingInterface::GetPackedAttributeName(int i)
+{
+  return "aperturePacked" + std::to_string(i) + "MC";
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingInterface::PackAttributes(
+  vtkDataSet* data, int layout, std::vector<vtkSmartPointer<vtkFloatArray>>& attributes)
 {
   const vtkIdType n = data->GetNumberOfPoints();
-  vtkDataArray* horizons = this->CheckHorizons(data) > 0
-    ? data->GetPointData()->GetArray(this->HorizonAnglesArrayName.c_str())
-    : nullptr;
-  attributes.resize(GetNumberOfHorizonAttributes(sectors));
+  const bool masks = this->ShadingMode == VISIBILITY_MASK;
+  vtkDataArray* array = nullptr;
+  if (this->CheckPackedLayout(data) > 0)
+  {
+    array = data->GetPointData()->GetArray(
+      (masks ? this->VisibilityMaskArrayName : this->HorizonAnglesArrayName).c_str());
+  }
+  attributes.resize(this->GetNumberOfPackedAttributes(layout));
   std::vector<float*> values;
   for (auto& attribute : attributes)
   {
@@ -519,24 +705,37 @@ void vtkApertureLightingInterface::PackHorizonAttributes(
     attribute->Fill(0.0);
     values.push_back(attribute->GetPointer(0));
   }
-  std::vector<float> in(horizons ? horizons->GetNumberOfComponents() : 1, -0.5f * vtkMath::Pi());
+  const int bytes = masks ? layout / 8 : layout;
+  std::vector<unsigned char> codes(bytes, masks ? 255 : 0);
+  if (masks)
+  {
+    // CheckVisibilityMask() made sure of the array's type.
+    auto* mask = static_cast<vtkUnsignedCharArray*>(array);
+    const int inBits = mask ? 8 * mask->GetNumberOfComponents() : layout;
+    for (vtkIdType p = 0; p < n; ++p)
+    {
+      if (mask)
+      {
+        ResampleMask(mask->GetPointer(p * inBits / 8), inBits, layout, codes.data());
+      }
+      PackBytes(codes.data(), bytes, values, p);
+      values.back()[4 * p + 3] = PackOpenSums(codes.data(), layout);
+    }
+    return;
+  }
+  std::vector<float> in(array ? array->GetNumberOfComponents() : 1, -0.5f * vtkMath::Pi());
   std::vector<double> tuple(in.size());
-  std::vector<unsigned char> codes(sectors);
   for (vtkIdType p = 0; p < n; ++p)
   {
-    if (horizons)
+    if (array)
     {
-      EncodePoint(horizons, p, sectors, tuple, in, codes.data());
+      EncodePoint(array, p, layout, tuple, in, codes.data());
     }
     else
     {
-      EncodeHorizons(in, sectors, codes.data());
+      EncodeHorizons(in, layout, codes.data());
     }
-    for (int k = 0; k < sectors; ++k)
-    {
-      const int word = k / 3;
-      values[word / 4][4 * p + word % 4] += static_cast<float>(codes[k] << (8 * (k % 3)));
-    }
+    PackBytes(codes.data(), bytes, values, p);
   }
 }
 
@@ -553,7 +752,7 @@ void vtkApertureLightingInterface::Report(const std::string& problem)
 //------------------------------------------------------------------------------
 bool vtkApertureLightingInterface::ReplaceShaderLight(
   std::map<vtkShader::Type, vtkShader*>& shaders, vtkActor* actor, vtkRenderer* renderer,
-  int lightComplexity, int lightCount, bool perTexel, bool inputTCoords, int horizonSectors)
+  int lightComplexity, int lightCount, bool perTexel, bool inputTCoords, int packedLayout)
 {
   vtkInformation* keys = actor->GetPropertyKeys();
   if (this->ShadingMode == STANDARD || lightComplexity < 1 || lightCount < 1 ||
@@ -568,14 +767,25 @@ bool vtkApertureLightingInterface::ReplaceShaderLight(
   std::string vs = shaders[vtkShader::Vertex]->GetSource();
   std::string gs = shaders[vtkShader::Geometry]->GetSource();
   std::string fs = shaders[vtkShader::Fragment]->GetSource();
+  // The masks need the point normals, which VTK leaves out of flat-shaded buffers.
+  if (this->ShadingMode == VISIBILITY_MASK && packedLayout > 0 &&
+    vs.find("in vec3 normalMC;") == std::string::npos)
+  {
+    this->ReportMask("flat interpolation leaves out the point normals");
+    packedLayout = 0;
+  }
   ReplaceApertureVaryings(vs, gs, perTexel, inputTCoords);
   vtkShaderProgram::Substitute(fs, "//VTK::Light::Dec",
-    this->GetFragmentDeclarations(renderer, lightCount, perTexel, horizonSectors));
+    this->GetFragmentDeclarations(renderer, lightCount, perTexel, packedLayout));
   vtkShaderProgram::Substitute(
     fs, "//VTK::Light::Impl", FragmentImplementation(lightComplexity, lightCount), false);
-  if (horizonSectors > 0)
+  if (packedLayout > 0 && this->ShadingMode == HORIZON)
   {
-    ReplaceHorizonCode(vs, gs, fs, perTexel, horizonSectors);
+    ReplaceHorizonCode(vs, gs, fs, perTexel, packedLayout);
+  }
+  if (packedLayout > 0 && this->ShadingMode == VISIBILITY_MASK)
+  {
+    ReplaceMaskCode(vs, gs, fs, renderer, lightComplexity, lightCount, packedLayout);
   }
   shaders[vtkShader::Vertex]->SetSource(vs);
   shaders[vtkShader::Geometry]->SetSource(gs);
@@ -585,11 +795,11 @@ bool vtkApertureLightingInterface::ReplaceShaderLight(
 
 //------------------------------------------------------------------------------
 std::string vtkApertureLightingInterface::GetFragmentDeclarations(
-  vtkRenderer* renderer, int lightCount, bool perTexel, int horizonSectors)
+  vtkRenderer* renderer, int lightCount, bool perTexel, int packedLayout)
 {
-  // The cap's model where horizons are asked for: the exact one, for the environment sky and
-  // for data without horizons.
-  const int shading = this->ShadingMode == HORIZON ? EXACT : this->ShadingMode;
+  // The cap's model where horizons or masks are asked for: the exact one, for the environment
+  // sky and for data without them.
+  const int shading = this->ShadingMode > STANDARD ? EXACT : this->ShadingMode;
   std::ostringstream dec;
   dec << static_cast<vtkOpenGLRenderer*>(renderer)->GetLightingUniforms() << "\n"
       << vtkSphericalCap::GetGLSLConstants() << "#define APERTURE_SHADING " << shading << "\n"
@@ -597,11 +807,16 @@ std::string vtkApertureLightingInterface::GetFragmentDeclarations(
       << "#define APERTURE_LIGHT_COUNT " << lightCount << "\n"
       << (perTexel ? "#define APERTURE_PER_TEXEL\n" : "")
       << (this->SkyEnvironment ? "#define APERTURE_SKY_ENVIRONMENT\n" : "") << vtkSphericalCapGLSL
-      << "\n";
-  if (horizonSectors > 0)
+      << "\n"
+      << vtkApertureLightCapGLSL << "\n";
+  if (packedLayout > 0 && this->ShadingMode == VISIBILITY_MASK)
+  {
+    dec << "#define APERTURE_VISIBILITY_MASK\n";
+  }
+  if (packedLayout > 0 && this->ShadingMode == HORIZON)
   {
     dec << "#define APERTURE_HORIZONS\n"
-        << "#define HORIZON_LIGHTING_SECTORS " << horizonSectors << "\n"
+        << "#define HORIZON_LIGHTING_SECTORS " << packedLayout << "\n"
         << vtkHorizonLighting::GetGLSLConstants() << vtkHorizonLightingCodeGLSL << "\n"
         << vtkHorizonLightingGLSL << "\n";
   }
@@ -631,15 +846,15 @@ void vtkApertureLightingInterface::ReplaceHorizonCode(
   }
   // Per vertex: the vertex shader decodes three codes a float, four floats an attribute, and
   // hands the angles on four a varying, which interpolate across the primitive.
-  const int attributes = GetNumberOfHorizonAttributes(sectors);
+  const int attributes = AttributesForBytes(sectors);
   std::ostringstream vsDec, vsImpl, gsDec, gsImpl, fsDec;
   vsDec << "//VTK::Normal::Dec\n" << vtkHorizonLightingCodeGLSL << "\n";
   vsImpl << "//VTK::Normal::Impl\n  {\n    vec4 packedHorizons[" << attributes << "] = vec4["
          << attributes << "](";
   for (int a = 0; a < attributes; ++a)
   {
-    vsDec << "in vec4 " << GetHorizonAttributeName(a) << ";\n";
-    vsImpl << (a ? ", " : "") << GetHorizonAttributeName(a);
+    vsDec << "in vec4 " << GetPackedAttributeName(a) << ";\n";
+    vsImpl << (a ? ", " : "") << GetPackedAttributeName(a);
   }
   vsImpl << ");\n    float h[" << 4 * outputs << "];\n"
          << "    for (int k = 0; k < " << 4 * outputs << "; ++k)\n    {\n"
@@ -667,6 +882,71 @@ void vtkApertureLightingInterface::ReplaceHorizonCode(
   vtkShaderProgram::Substitute(gs, "//VTK::Normal::Dec", "//VTK::Normal::Dec\n" + gsDec.str());
   vtkShaderProgram::Substitute(gs, "//VTK::Normal::Impl", "//VTK::Normal::Impl\n" + gsImpl.str());
   vtkShaderProgram::Substitute(fs, "//APERTURE::Horizons::Dec", fsDec.str() + read.str());
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingInterface::ReplaceMaskCode(std::string& vs, std::string& gs,
+  std::string& fs, vtkRenderer* renderer, int lightComplexity, int lightCount, int bits)
+{
+  const int attributes = AttributesForBytes(bits / 8);
+  std::ostringstream vsDec, vsImpl, gsDec, gsImpl, fsDec;
+  vsDec << "//VTK::Normal::Dec\n"
+        << static_cast<vtkOpenGLRenderer*>(renderer)->GetLightingUniforms() << "\n"
+        << vtkSphericalCap::GetGLSLConstants() << vtkSphericalCapGLSL << "\n"
+        << vtkApertureLightCapGLSL << "\n"
+        << "#define VISIBILITY_MASK_SIDE " << vtkVisibilityMask::GetSide(bits) << "\n"
+        << "#define APERTURE_LIGHT_COUNT " << lightCount << "\n"
+        << "#define APERTURE_MASK_ATTRIBUTES " << attributes << "\n"
+        << vtkVisibilityMask::GetGLSLConstants() << vtkVisibilityMaskGLSL << "\n"
+        << vtkVisibilityMaskVS << "\n";
+  vsImpl << "  {\n    apertureMaskUnpack(vec4[" << attributes << "](";
+  for (int a = 0; a < attributes; ++a)
+  {
+    vsDec << "in vec4 " << GetPackedAttributeName(a) << ";\n";
+    vsImpl << (a ? ", " : "") << GetPackedAttributeName(a);
+  }
+  vsImpl << "));\n    apertureMaskCoverage = vec2(0.0);\n";
+  // Each light's transfer and coverage, then the sky, four to a varying.
+  std::vector<std::string> results;
+  for (int i = 0; i < lightCount; ++i)
+  {
+    const std::string light = "apertureMaskLight" + std::to_string(i);
+    vsImpl << "    vec2 " << light << " = apertureMaskLight(normalMC, "
+           << MaskLightCap(lightComplexity, i) << ");\n";
+    results.push_back(light + ".x");
+    results.push_back(light + ".y");
+  }
+  results.emplace_back(
+    "visibilityMaskSkyTransfer(normalMC, apertureMaskOpen, apertureMaskCoverage, "
+    "apertureSkyCosine != 0)");
+  const int outputs = static_cast<int>(results.size() + 3) / 4;
+  results.resize(4 * outputs, "0.0");
+  std::ostringstream read;
+  read << "void apertureReadMask()\n{\n";
+  for (int m = 0; m < outputs; ++m)
+  {
+    const std::string name = "apertureMask" + std::to_string(m);
+    vsDec << "out vec4 " << name << "VSOutput;\n";
+    vsImpl << "    " << name << "VSOutput = vec4(" << results[4 * m] << ", " << results[4 * m + 1]
+           << ", " << results[4 * m + 2] << ", " << results[4 * m + 3] << ");\n";
+    gsDec << "in vec4 " << name << "VSOutput[];\nout vec4 " << name << "GSOutput;\n";
+    gsImpl << name << "GSOutput = " << name << "VSOutput[i];\n";
+    fsDec << "in vec4 " << name << "VSOutput;\n";
+  }
+  auto value = [](int k)
+  { return "apertureMask" + std::to_string(k / 4) + "VSOutput[" + std::to_string(k % 4) + "]"; };
+  for (int i = 0; i < lightCount; ++i)
+  {
+    read << "  apertureMaskLights[" << i << "] = vec2(" << value(2 * i) << ", " << value(2 * i + 1)
+         << ");\n";
+  }
+  read << "  apertureMaskSky = " << value(2 * lightCount) << ";\n  apertureMaskLight = 0;\n}\n";
+  vsImpl << "  }\n//VTK::Light::Impl";
+  vtkShaderProgram::Substitute(vs, "//VTK::Normal::Dec", vsDec.str());
+  vtkShaderProgram::Substitute(vs, "//VTK::Light::Impl", vsImpl.str());
+  vtkShaderProgram::Substitute(gs, "//VTK::Normal::Dec", "//VTK::Normal::Dec\n" + gsDec.str());
+  vtkShaderProgram::Substitute(gs, "//VTK::Normal::Impl", "//VTK::Normal::Impl\n" + gsImpl.str());
+  vtkShaderProgram::Substitute(fs, "//APERTURE::Mask::Dec", fsDec.str() + read.str());
 }
 
 //------------------------------------------------------------------------------
@@ -1054,6 +1334,7 @@ void vtkApertureLightingInterface::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BentNormalArrayName: " << this->BentNormalArrayName << "\n";
   os << indent << "ApertureRadiusArrayName: " << this->ApertureRadiusArrayName << "\n";
   os << indent << "HorizonAnglesArrayName: " << this->HorizonAnglesArrayName << "\n";
+  os << indent << "VisibilityMaskArrayName: " << this->VisibilityMaskArrayName << "\n";
   os << indent << "SkyColor: " << this->SkyColor[0] << ", " << this->SkyColor[1] << ", "
      << this->SkyColor[2] << "\n";
   os << indent << "SkyIntensity: " << this->SkyIntensity << "\n";

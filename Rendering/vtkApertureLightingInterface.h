@@ -78,7 +78,8 @@ public:
   /**
    * Shading models: the first four are vtkSphericalCap's, which the shaders also get their
    * values from; STANDARD is VTK's own lighting; HORIZON shades lights and the uniform sky from
-   * per-sector horizons (vtkHorizonLighting) where the data hold them, the exact cap elsewhere.
+   * per-sector horizons (vtkHorizonLighting), VISIBILITY_MASK from per-point visibility masks
+   * (vtkVisibilityMask), where the data hold them, the exact cap elsewhere.
    */
   enum ShadingModes
   {
@@ -87,7 +88,8 @@ public:
     SIMPLIFIED = vtkSphericalCap::SIMPLIFIED,
     BENT_NORMAL = vtkSphericalCap::BENT_NORMAL,
     STANDARD,
-    HORIZON
+    HORIZON,
+    VISIBILITY_MASK
   };
 
   ///@{
@@ -102,6 +104,7 @@ public:
   void SetShadingModeToBentNormal() { this->SetShadingMode(BENT_NORMAL); }
   void SetShadingModeToStandard() { this->SetShadingMode(STANDARD); }
   void SetShadingModeToHorizon() { this->SetShadingMode(HORIZON); }
+  void SetShadingModeToVisibilityMask() { this->SetShadingMode(VISIBILITY_MASK); }
   const char* GetShadingModeAsString();
   ///@}
 
@@ -141,6 +144,24 @@ public:
    */
   void SetHorizonAnglesArrayName(const char* name);
   vtkGetCharFromStdStringMacro(HorizonAnglesArrayName);
+  ///@}
+
+  ///@{
+  /**
+   * The point-data array of visibility masks that VISIBILITY_MASK shades from
+   * (vtkAperturePrecompute's ComputeVisibilityMask). Default "VisibilityMask": unsigned char,
+   * bits/8 components, its cells in the tangent frame of the dataset's point normals (which the
+   * mode needs, with an interpolation other than flat), in the model's frame; actors may rotate
+   * and scale uniformly. Bits do not interpolate, so the mask is evaluated per vertex, in the
+   * vertex shader: each light's transfer through the open cells (vtkVisibilityMask's 64 samples
+   * of the light's cap) and the uniform sky through them, which the fragments interpolate (a
+   * mask per fragment would take the bits of one vertex of each triangle, and its facets show).
+   * On the GPU a mask has at most 256 bits (32 bytes, three vertex attributes); finer masks are
+   * resampled (a coarse cell is open where most of the fine cells under its 2 x 2 sub-grid are).
+   * Both faces of a surface shade as its front. An environment sky still comes through the cap.
+   */
+  void SetVisibilityMaskArrayName(const char* name);
+  vtkGetCharFromStdStringMacro(VisibilityMaskArrayName);
   ///@}
 
   ///@{
@@ -243,31 +264,50 @@ public:
    */
   int CheckHorizons(vtkDataSet* data);
 
+  /**
+   * For the mappers in VISIBILITY_MASK mode: the bits the shaders get from a dataset's masks (at
+   * most GetMaximumShaderMaskBits()), or 0 where they cannot be used (missing, not unsigned
+   * char, a component count that is no mask's, no point normals), with one warning per new
+   * problem: the exact cap applies then. Cached on the arrays' modification times.
+   */
+  int CheckVisibilityMask(vtkDataSet* data);
+
+  /**
+   * For the mappers: what the shading mode packs per vertex beside the apertures (the
+   * horizons' sectors, the masks' bits; CheckHorizons() or CheckVisibilityMask()), or 0 for
+   * nothing. Per texel only horizons are packed (as a texture); masks warn there.
+   */
+  int CheckPackedLayout(vtkDataSet* data);
+
   ///@{
   /**
-   * For the mappers: the vertex attributes that carry horizons per vertex
-   * (GetHorizonAttributeName(i), i < GetNumberOfHorizonAttributes(sectors)), and their values for
-   * a dataset: three 8-bit codes per float (exact integers), four floats per attribute, resampled
-   * to `sectors` (at most GetMaximumShaderSectors(), 32); open (−π/2) where the dataset has no
-   * usable horizons.
+   * For the mappers: the vertex attributes that carry a layout's values per vertex
+   * (GetPackedAttributeName(i), i < GetNumberOfPackedAttributes(layout), at most
+   * GetMaximumPackedAttributes()), and their values for a dataset: bytes three to a float
+   * (exact integers), four floats to an attribute. Horizons are 8-bit codes resampled to
+   * `layout` sectors (at most GetMaximumShaderSectors(), 32), open (−π/2) where the dataset has
+   * none usable; masks are their bytes, resampled to `layout` bits, all open where the dataset
+   * has none usable.
    */
-  static int GetNumberOfHorizonAttributes(int sectors);
+  int GetNumberOfPackedAttributes(int layout) const;
+  static int GetMaximumPackedAttributes() { return 3; }
   static int GetMaximumShaderSectors() { return 32; }
-  static std::string GetHorizonAttributeName(int i);
-  void PackHorizonAttributes(
-    vtkDataSet* data, int sectors, std::vector<vtkSmartPointer<vtkFloatArray>>& attributes);
+  static int GetMaximumShaderMaskBits() { return 256; }
+  static std::string GetPackedAttributeName(int i);
+  void PackAttributes(
+    vtkDataSet* data, int layout, std::vector<vtkSmartPointer<vtkFloatArray>>& attributes);
   ///@}
 
   /**
    * For the mappers: writes the aperture lighting code into the shaders, or returns false where
    * standard shading applies (STANDARD, lighting off, PBR, the lighting-map pass keys).
    * perTexel selects texture lookups; inputTCoords whether their coordinates come from the
-   * input's texture coordinates; horizonSectors > 0 shades from that many sectors of horizons
-   * (CheckHorizons()).
+   * input's texture coordinates; packedLayout > 0 shades from the horizons or masks of that
+   * layout (CheckPackedLayout()).
    */
   bool ReplaceShaderLight(std::map<vtkShader::Type, vtkShader*>& shaders, vtkActor* actor,
     vtkRenderer* renderer, int lightComplexity, int lightCount, bool perTexel, bool inputTCoords,
-    int horizonSectors = 0);
+    int packedLayout = 0);
 
   /**
    * For the mappers: sets the uniforms the lighting code uses (light radii, sky, the aperture
@@ -304,6 +344,7 @@ protected:
   std::string BentNormalArrayName = "BentNormal";
   std::string ApertureRadiusArrayName = "ApertureRadius";
   std::string HorizonAnglesArrayName = "HorizonAngles";
+  std::string VisibilityMaskArrayName = "VisibilityMask";
   double SkyColor[3] = { 1.0, 1.0, 1.0 };
   double SkyIntensity = 0.0;
   bool SkyCosineWeighting = true;
@@ -318,7 +359,7 @@ private:
   // The fragment shader's declarations: VTK's lighting uniforms, the GLSL sources and the
   // defines that configure them.
   std::string GetFragmentDeclarations(
-    vtkRenderer* renderer, int lightCount, bool perTexel, int horizonSectors);
+    vtkRenderer* renderer, int lightCount, bool perTexel, int packedLayout);
   // The parts of SetShaderParameters().
   void SetSkyParameters(vtkShaderProgram* program, vtkRenderer* renderer);
   void SetLightParameters(vtkShaderProgram* program, vtkRenderer* renderer);
@@ -332,8 +373,13 @@ private:
   // shaders' decoding and passing of the horizons.
   static void ReplaceHorizonCode(
     std::string& vs, std::string& gs, std::string& fs, bool perTexel, int sectors);
-  // Warns about a new problem (none when empty) once, and remembers it.
+  // The vertex shader's evaluation of the masks, per light and for the sky, and the passing of
+  // the results to the fragment shader's apertureReadMask().
+  static void ReplaceMaskCode(std::string& vs, std::string& gs, std::string& fs,
+    vtkRenderer* renderer, int lightComplexity, int lightCount, int bits);
+  // Warns about a new problem (none when empty) once, and remembers it; the same for the masks.
   void Report(const std::string& problem);
+  void ReportMask(const std::string& problem);
   // Builds the environment sky's table and uploads it as a 3D texture, when the environment's
   // image or blur changed.
   void UploadSkyTable(vtkRenderer* renderer);
@@ -350,6 +396,10 @@ private:
   vtkMTimeType CheckedHorizonsTime = 0;
   int CheckedSectors = 0;
   std::string LastHorizonProblem;
+  vtkDataArray* CheckedMask[2] = { nullptr, nullptr };
+  vtkMTimeType CheckedMaskTime = 0;
+  int CheckedMaskBits = 0;
+  std::string LastMaskProblem;
   vtkMTimeType SkyTableTime = 0;
   std::string LastProblem;
   vtkDataArray* CheckedArrays[2] = { nullptr, nullptr };

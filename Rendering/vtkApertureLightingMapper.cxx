@@ -32,13 +32,14 @@ vtkStandardNewMacro(vtkApertureLightingMapper);
 
 namespace
 {
-// What a render shades with; the horizons' sector count, if any, above these bits.
+// What a render shades with; the packed layout (horizons' sectors, masks' bits), if any, above
+// these bits.
 enum StateBits
 {
   Apertures = 1,    // apertures are usable and the model is not standard
   PerTexel = 2,     // read from the aperture image
   InputTCoords = 4, // with the input's texture coordinates
-  SectorShift = 3,
+  LayoutShift = 3,
 };
 }
 
@@ -95,12 +96,11 @@ void vtkApertureLightingMapper::RenderPiece(vtkRenderer* renderer, vtkActor* act
       state = Apertures | (image ? PerTexel : 0) | (inputTCoords ? InputTCoords : 0);
     }
   }
-  this->HorizonSectors =
-    (state & Apertures) && this->Lighting->GetShadingMode() == vtkApertureLightingInterface::HORIZON
-    ? this->Lighting->CheckHorizons(
+  this->PackedLayout = (state & Apertures)
+    ? this->Lighting->CheckPackedLayout(
         (state & PerTexel) ? static_cast<vtkDataSet*>(this->Lighting->GetApertureImage()) : input)
     : 0;
-  this->State = state | (this->HorizonSectors << SectorShift);
+  this->State = state | (this->PackedLayout << LayoutShift);
   this->MapApertureAttributes(input);
   this->Superclass::RenderPiece(renderer, actor);
 }
@@ -115,15 +115,12 @@ void vtkApertureLightingMapper::MapApertureAttributes(vtkPolyData* input)
     { "apertureTCoordMC",
       (this->State & InputTCoords) ? input->GetPointData()->GetTCoords()->GetName() : "" },
   };
-  // The packed horizons are named as their attributes (in the packed copy only).
-  const int horizonAttributes = vtkApertureLightingInterface::GetNumberOfHorizonAttributes(
-    vtkApertureLightingInterface::GetMaximumShaderSectors());
-  for (int i = 0; i < horizonAttributes; ++i)
+  // The packed horizons or masks are named as their attributes (in the packed copy only).
+  for (int i = 0; i < vtkApertureLightingInterface::GetMaximumPackedAttributes(); ++i)
   {
-    const std::string name = vtkApertureLightingInterface::GetHorizonAttributeName(i);
-    const bool used = perVertex &&
-      i < vtkApertureLightingInterface::GetNumberOfHorizonAttributes(this->HorizonSectors) &&
-      this->HorizonSectors > 0;
+    const std::string name = vtkApertureLightingInterface::GetPackedAttributeName(i);
+    const bool used = perVertex && this->PackedLayout > 0 &&
+      i < this->Lighting->GetNumberOfPackedAttributes(this->PackedLayout);
     wanted.emplace_back(name, used ? name : "");
   }
   for (const auto& attribute : wanted)
@@ -151,23 +148,27 @@ void vtkApertureLightingMapper::MapApertureAttributes(vtkPolyData* input)
 //------------------------------------------------------------------------------
 vtkPolyData* vtkApertureLightingMapper::GetPackedInput(vtkPolyData* input)
 {
-  vtkDataArray* horizons =
-    input->GetPointData()->GetArray(this->Lighting->GetHorizonAnglesArrayName());
-  const vtkMTimeType time = std::max(input->GetMTime(), horizons ? horizons->GetMTime() : 0);
-  if (!this->PackedInput || time > this->PackedTime || this->PackedSectors != this->HorizonSectors)
+  vtkPointData* pd = input->GetPointData();
+  vtkDataArray* horizons = pd->GetArray(this->Lighting->GetHorizonAnglesArrayName());
+  vtkDataArray* masks = pd->GetArray(this->Lighting->GetVisibilityMaskArrayName());
+  const vtkMTimeType time = std::max(
+    { input->GetMTime(), horizons ? horizons->GetMTime() : 0, masks ? masks->GetMTime() : 0 });
+  // Horizons' layouts (sectors, at most 32) and masks' (bits, at least 64) never meet.
+  if (!this->PackedInput || time > this->PackedTime ||
+    this->PackedInputLayout != this->PackedLayout)
   {
     std::vector<vtkSmartPointer<vtkFloatArray>> attributes;
-    this->Lighting->PackHorizonAttributes(input, this->HorizonSectors, attributes);
+    this->Lighting->PackAttributes(input, this->PackedLayout, attributes);
     this->PackedInput = vtkSmartPointer<vtkPolyData>::New();
     this->PackedInput->ShallowCopy(input);
     for (size_t i = 0; i < attributes.size(); ++i)
     {
       attributes[i]->SetName(
-        vtkApertureLightingInterface::GetHorizonAttributeName(static_cast<int>(i)).c_str());
+        vtkApertureLightingInterface::GetPackedAttributeName(static_cast<int>(i)).c_str());
       this->PackedInput->GetPointData()->AddArray(attributes[i]);
     }
     this->PackedTime = time;
-    this->PackedSectors = this->HorizonSectors;
+    this->PackedInputLayout = this->PackedLayout;
   }
   return this->PackedInput;
 }
@@ -176,7 +177,7 @@ vtkPolyData* vtkApertureLightingMapper::GetPackedInput(vtkPolyData* input)
 void vtkApertureLightingMapper::BuildBufferObjects(vtkRenderer* renderer, vtkActor* actor)
 {
   const bool packed =
-    this->HorizonSectors > 0 && (this->State & Apertures) && !(this->State & PerTexel);
+    this->PackedLayout > 0 && (this->State & Apertures) && !(this->State & PerTexel);
   if (!packed || !this->CurrentInput)
   {
     this->PackedInput = nullptr;
@@ -209,7 +210,7 @@ void vtkApertureLightingMapper::ReplaceShaderLight(
   if (!(this->State & Apertures) || this->DrawingTubesOrSpheres(*this->LastBoundBO, actor) ||
     !this->Lighting->ReplaceShaderLight(shaders, actor, renderer, info.LastLightComplexity,
       info.LastLightCount, (this->State & PerTexel) != 0, (this->State & InputTCoords) != 0,
-      this->HorizonSectors))
+      this->PackedLayout))
   {
     this->Superclass::ReplaceShaderLight(shaders, renderer, actor);
   }

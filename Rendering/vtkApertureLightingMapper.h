@@ -24,9 +24,11 @@
  * simplified variant, bent normal only, VTK's standard lighting, and Horizon, which shades from
  * the per-sector horizons that vtkAperturePrecompute keeps for height fields
  * (ComputeHorizonAngles; see vtkHorizonLighting), where one cap is wrong under a low sun, and
- * falls back to the exact cap, with one warning, on data without them. For an unoccluded point
- * a light of intensity I gives the same irradiance as in VTK's own lighting, so the models and
- * standard shading stay comparable.
+ * Visibility mask, which shades from the per-point masks it keeps for meshes
+ * (ComputeVisibilityMask; see vtkVisibilityMask), where one cap is wrong under a small light;
+ * both fall back to the exact cap, with one warning, on data without their arrays. For an
+ * unoccluded point a light of intensity I gives the same irradiance as in VTK's own lighting, so
+ * the models and standard shading stay comparable.
  *
  * Apertures come per vertex (vertex attributes from point data) or, in the per-texel mode, from
  * the grid of vtkAperturePrecompute's height-field output as a texture (SetApertureImage()).
@@ -73,6 +75,7 @@ public:
   void SetShadingModeToBentNormal() { this->Lighting->SetShadingModeToBentNormal(); }
   void SetShadingModeToStandard() { this->Lighting->SetShadingModeToStandard(); }
   void SetShadingModeToHorizon() { this->Lighting->SetShadingModeToHorizon(); }
+  void SetShadingModeToVisibilityMask() { this->Lighting->SetShadingModeToVisibilityMask(); }
   ///@}
 
   ///@{
@@ -86,7 +89,8 @@ public:
 
   ///@{
   /**
-   * Names of the aperture arrays. Defaults: "BentNormal", "ApertureRadius", "HorizonAngles".
+   * Names of the aperture arrays. Defaults: "BentNormal", "ApertureRadius", "HorizonAngles",
+   * "VisibilityMask".
    */
   void SetBentNormalArrayName(const char* name) { this->Lighting->SetBentNormalArrayName(name); }
   const char* GetBentNormalArrayName() { return this->Lighting->GetBentNormalArrayName(); }
@@ -100,6 +104,11 @@ public:
     this->Lighting->SetHorizonAnglesArrayName(name);
   }
   const char* GetHorizonAnglesArrayName() { return this->Lighting->GetHorizonAnglesArrayName(); }
+  void SetVisibilityMaskArrayName(const char* name)
+  {
+    this->Lighting->SetVisibilityMaskArrayName(name);
+  }
+  const char* GetVisibilityMaskArrayName() { return this->Lighting->GetVisibilityMaskArrayName(); }
   ///@}
 
   ///@{
@@ -170,8 +179,8 @@ protected:
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* renderer, vtkActor* actor) override;
   void SetMapperShaderParameters(
     vtkOpenGLHelper& cellBO, vtkRenderer* renderer, vtkActor* actor) override;
-  // Horizons per vertex reach the buffers from a shallow copy of the input that holds them
-  // packed, so that the input keeps its arrays.
+  // Horizons and masks per vertex reach the buffers from a shallow copy of the input that holds
+  // them packed, so that the input keeps its arrays.
   void BuildBufferObjects(vtkRenderer* renderer, vtkActor* actor) override;
 
   vtkNew<vtkApertureLightingInterface> Lighting;
@@ -182,13 +191,13 @@ private:
 
   // Maps the aperture arrays (or texture coordinates) to vertex attributes when they change.
   void MapApertureAttributes(vtkPolyData* input);
-  // The input with its horizons packed (vtkApertureLightingInterface::PackHorizonAttributes()),
-  // remade when the input or the sector count changes.
+  // The input with its horizons or masks packed (vtkApertureLightingInterface::PackAttributes()),
+  // remade when the input or the layout changes.
   vtkPolyData* GetPackedInput(vtkPolyData* input);
   vtkSmartPointer<vtkPolyData> PackedInput;
   vtkMTimeType PackedTime = 0;
-  int PackedSectors = 0;
-  int HorizonSectors = 0;
+  int PackedInputLayout = 0;
+  int PackedLayout = 0;
 
   // Whether the input's cells name only its points (checked when the input changes): VTK's
   // buffer code reads through them unchecked.

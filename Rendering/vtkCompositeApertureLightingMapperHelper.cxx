@@ -61,20 +61,19 @@ void vtkCompositeApertureLightingMapperHelper::SetLighting(vtkApertureLightingIn
 void vtkCompositeApertureLightingMapperHelper::RenderPiece(vtkRenderer* renderer, vtkActor* actor)
 {
   // Shade with apertures when the model asks for them and at least one block has them; with
-  // horizons, the most sectors of any block's (the others' are resampled, or open).
+  // horizons or masks, the finest layout of any block's (the others' are resampled, or open).
   this->Apertures = false;
-  this->HorizonSectors = 0;
+  this->PackedLayout = 0;
   if (this->Lighting && this->Lighting->GetShadingMode() != vtkApertureLightingInterface::STANDARD)
   {
-    const bool horizons = this->Lighting->GetShadingMode() == vtkApertureLightingInterface::HORIZON;
     for (const auto& block : this->Data)
     {
       this->Apertures = this->Apertures || this->Lighting->CheckApertures(block.first);
-      this->HorizonSectors =
-        horizons ? std::max(this->HorizonSectors, this->Lighting->CheckHorizons(block.first)) : 0;
+      this->PackedLayout =
+        std::max(this->PackedLayout, this->Lighting->CheckPackedLayout(block.first));
     }
   }
-  this->HorizonSectors = this->Apertures ? this->HorizonSectors : 0;
+  this->PackedLayout = this->Apertures ? this->PackedLayout : 0;
   this->Superclass::RenderPiece(renderer, actor);
 }
 
@@ -83,7 +82,7 @@ bool vtkCompositeApertureLightingMapperHelper::GetNeedToRebuildBufferObjects(
   vtkRenderer* renderer, vtkActor* actor)
 {
   return this->Superclass::GetNeedToRebuildBufferObjects(renderer, actor) ||
-    this->Apertures != this->BuffersHaveApertures || this->HorizonSectors != this->BufferSectors;
+    this->Apertures != this->BuffersHaveApertures || this->PackedLayout != this->BufferLayout;
 }
 
 //------------------------------------------------------------------------------
@@ -91,7 +90,7 @@ void vtkCompositeApertureLightingMapperHelper::BuildBufferObjects(
   vtkRenderer* renderer, vtkActor* actor)
 {
   this->BuffersHaveApertures = this->Apertures;
-  this->BufferSectors = this->HorizonSectors;
+  this->BufferLayout = this->PackedLayout;
   this->Superclass::BuildBufferObjects(renderer, actor);
 }
 
@@ -128,15 +127,15 @@ void vtkCompositeApertureLightingMapperHelper::AppendOneBufferObject(vtkRenderer
   // The group keeps a reference to what it appends.
   this->VBOs->AppendDataArray("bentNormalMC", bent, VTK_FLOAT);
   this->VBOs->AppendDataArray("apertureRadiusMC", radius, VTK_FLOAT);
-  if (this->BufferSectors > 0)
+  if (this->BufferLayout > 0)
   {
-    std::vector<vtkSmartPointer<vtkFloatArray>> horizons;
-    this->Lighting->PackHorizonAttributes(block, this->BufferSectors, horizons);
-    for (size_t i = 0; i < horizons.size(); ++i)
+    std::vector<vtkSmartPointer<vtkFloatArray>> packed;
+    this->Lighting->PackAttributes(block, this->BufferLayout, packed);
+    for (size_t i = 0; i < packed.size(); ++i)
     {
       this->VBOs->AppendDataArray(
-        vtkApertureLightingInterface::GetHorizonAttributeName(static_cast<int>(i)).c_str(),
-        horizons[i], VTK_FLOAT);
+        vtkApertureLightingInterface::GetPackedAttributeName(static_cast<int>(i)).c_str(),
+        packed[i], VTK_FLOAT);
     }
   }
 }
@@ -147,7 +146,7 @@ bool vtkCompositeApertureLightingMapperHelper::GetNeedToRebuildShaders(
 {
   const bool rebuild = this->Superclass::GetNeedToRebuildShaders(cellBO, renderer, actor);
   int& last = this->ShaderState[&cellBO];
-  const int state = (this->Apertures ? 1 : 0) | (this->HorizonSectors << 1);
+  const int state = (this->Apertures ? 1 : 0) | (this->PackedLayout << 1);
   const bool changed = last != state;
   last = state;
   return rebuild || changed ||
@@ -161,7 +160,7 @@ void vtkCompositeApertureLightingMapperHelper::ReplaceShaderLight(
   const auto& info = this->PrimitiveInfo[this->LastBoundBO];
   if (!this->Apertures || this->DrawingTubesOrSpheres(*this->LastBoundBO, actor) ||
     !this->Lighting->ReplaceShaderLight(shaders, actor, renderer, info.LastLightComplexity,
-      info.LastLightCount, false, false, this->HorizonSectors))
+      info.LastLightCount, false, false, this->PackedLayout))
   {
     this->Superclass::ReplaceShaderLight(shaders, renderer, actor);
   }
@@ -195,5 +194,5 @@ void vtkCompositeApertureLightingMapperHelper::PrintSelf(ostream& os, vtkIndent 
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Apertures: " << this->Apertures << "\n";
-  os << indent << "HorizonSectors: " << this->HorizonSectors << "\n";
+  os << indent << "PackedLayout: " << this->PackedLayout << "\n";
 }

@@ -67,11 +67,11 @@ private:
 
   vtkSmartPointer<vtkApertureLightingInterface> Lighting;
   // Whether the vertex buffers hold aperture arrays, and whether this render shades with them;
-  // the same for horizons (their sector count, 0 for none).
+  // the same for packed horizons or masks (their layout, 0 for none).
   bool BuffersHaveApertures = false;
   bool Apertures = false;
-  int BufferSectors = 0;
-  int HorizonSectors = 0;
+  int BufferLayout = 0;
+  int PackedLayout = 0;
   std::map<const vtkOpenGLHelper*, int> ShaderState;
 };
 

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <mutex>
+#include <sstream>
 #include <vector>
 
 vtkStandardNewMacro(vtkVisibilityMask);
@@ -42,31 +43,18 @@ void SquareToDisk(double a, double b, double& x, double& y)
   y = r * std::sin(phi);
 }
 
+// The inverse, with one arctangent within ±π/4 (as the GLSL twin, where it is the cost of a
+// light's sample): the larger coordinate's sign gives the square's side, the angle from it the
+// position along that side.
 void DiskToSquare(double x, double y, double& a, double& b)
 {
+  const bool wide = std::abs(x) >= std::abs(y);
+  const double big = wide ? x : y, small = wide ? y : x;
   const double r = std::sqrt(x * x + y * y);
-  double phi = std::atan2(y, x);
-  phi = phi < -QuarterPi ? phi + 2.0 * Pi : phi;
-  if (phi < QuarterPi)
-  {
-    a = r;
-    b = r * phi / QuarterPi;
-  }
-  else if (phi < 3.0 * QuarterPi)
-  {
-    b = r;
-    a = r * (2.0 * QuarterPi - phi) / QuarterPi;
-  }
-  else if (phi < 5.0 * QuarterPi)
-  {
-    a = -r;
-    b = -r * (phi - Pi) / QuarterPi;
-  }
-  else
-  {
-    b = -r;
-    a = -r * (6.0 * QuarterPi - phi) / QuarterPi;
-  }
+  const double major = big > 0.0 ? r : big < 0.0 ? -r : 0.0;
+  const double minor = big != 0.0 ? r * std::atan(small / std::abs(big)) / QuarterPi : 0.0;
+  a = wide ? major : minor;
+  b = wide ? minor : major;
 }
 
 // ∫ n·ω dω per cell of a side × side grid, by a fine midpoint rule in the square (the maps are
@@ -138,18 +126,21 @@ bool IsOpen(const unsigned char* mask, int cell)
 void LightSums(const double n[3], const unsigned char* mask, int side, const double l[3], double rl,
   double sums[2])
 {
-  const int samples = vtkVisibilityMask::LightSamples();
+  const int samples = vtkVisibilityMask::LightSamples(rl, side * side);
   double t[3], b[3], nt[3], nb[3]; // the light's frame, the normal's
   vtkVisibilityMask::Frame(l, t, b);
   vtkVisibilityMask::Frame(n, nt, nb);
   const double halfSin = std::sin(0.5 * rl), capArea = 4.0 * Pi * halfSin * halfSin;
+  // The spiral turns by the golden angle a sample, by rotation (as the GLSL twin, which saves
+  // its sines so).
   const double golden = Pi * (3.0 - std::sqrt(5.0));
+  const double turnC = std::cos(golden), turnS = std::sin(golden);
+  double c = 1.0, s = 0.0;
   for (int i = 0; i < samples; ++i)
   {
     // 1 − cos θ uniform in [0, 1 − cos rl], formed from the half angle for sun-sized caps.
     const double down = 2.0 * halfSin * halfSin * (i + 0.5) / samples;
     const double cosT = 1.0 - down, sinT = std::sqrt(std::max(0.0, down * (2.0 - down)));
-    const double c = std::cos(golden * i), s = std::sin(golden * i);
     double w[3];
     for (int k = 0; k < 3; ++k)
     {
@@ -162,6 +153,9 @@ void LightSums(const double n[3], const unsigned char* mask, int side, const dou
       sums[0] += capArea / samples;
       sums[1] += capArea / samples * z;
     }
+    const double next = c * turnC - s * turnS;
+    s = s * turnC + c * turnS;
+    c = next;
   }
 }
 
@@ -245,6 +239,29 @@ void vtkVisibilityMask::CellRayDirections(
 }
 
 //------------------------------------------------------------------------------
+int vtkVisibilityMask::LightSamples(double rl, int bits)
+{
+  const double halfSin = std::sin(0.5 * rl);
+  const double eighths = 8.0 * 4.0 * Pi * halfSin * halfSin / (2.0 * Pi / std::max(1, bits));
+  return 8 * static_cast<int>(std::min(8.0, std::max(1.0, std::ceil(eighths))));
+}
+
+//------------------------------------------------------------------------------
+void vtkVisibilityMask::OpenSums(const unsigned char* mask, int bits, double sums[2])
+{
+  sums[0] = sums[1] = 0.0;
+  const int side = GetSide(bits);
+  for (int cell = 0; mask && side > 0 && cell < bits; ++cell)
+  {
+    if (IsOpen(mask, cell))
+    {
+      sums[0] += 2.0 * Pi / bits;
+      sums[1] += CellCosine(cell, side);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
 double vtkVisibilityMask::CellCosine(int cell, int side)
 {
   if (side < 1 || side > 32 || cell < 0 || cell >= side * side)
@@ -283,24 +300,15 @@ double vtkVisibilityMask::LightTransfer(const double normal[3], const unsigned c
 double vtkVisibilityMask::SkyTransfer(const double normal[3], const unsigned char* mask, int bits,
   double coverage, double cosineCoverage, bool cosineWeighted)
 {
-  double n[3];
-  const int side = GetSide(bits);
-  if (side == 0 || !mask || std::isnan(coverage) || std::isnan(cosineCoverage) ||
+  double n[3], open[2];
+  if (GetSide(bits) == 0 || !mask || std::isnan(coverage) || std::isnan(cosineCoverage) ||
     !vtkSphericalCap::UnitAxis(normal, n))
   {
     return 0.0;
   }
-  double open = 0.0, openCosine = 0.0;
-  for (int cell = 0; cell < bits; ++cell)
-  {
-    if (IsOpen(mask, cell))
-    {
-      open += 2.0 * Pi / bits;
-      openCosine += CellCosine(cell, side);
-    }
-  }
-  return cosineWeighted ? std::max(0.0, openCosine - cosineCoverage) / Pi
-                        : std::max(0.0, open - coverage) / (2.0 * Pi);
+  OpenSums(mask, bits, open);
+  return cosineWeighted ? std::max(0.0, open[1] - cosineCoverage) / Pi
+                        : std::max(0.0, open[0] - coverage) / (2.0 * Pi);
 }
 
 //------------------------------------------------------------------------------
@@ -325,14 +333,21 @@ double vtkVisibilityMask::SkyTransfer(
 //------------------------------------------------------------------------------
 std::string vtkVisibilityMask::GetGLSLConstants()
 {
-  return "// vtkVisibilityMask's constants (vtkVisibilityMask::GetGLSLConstants()).\n"
-         "const int visibilityMaskLightSamples = " +
-    std::to_string(LightSamples()) + ";\n";
+  // LightSamples(): 8 to 64, in steps of 8; the spiral's turn by the golden angle.
+  const double golden = Pi * (3.0 - std::sqrt(5.0));
+  std::ostringstream constants;
+  constants.precision(17);
+  constants << "// vtkVisibilityMask's constants (vtkVisibilityMask::GetGLSLConstants()).\n"
+            << "const int visibilityMaskSampleStep = 8;\n"
+            << "const int visibilityMaskMaximumSamples = 64;\n"
+            << "const vec2 visibilityMaskGoldenTurn = vec2(" << std::cos(golden) << ", "
+            << std::sin(golden) << ");\n";
+  return constants.str();
 }
 
 //------------------------------------------------------------------------------
 void vtkVisibilityMask::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "LightSamples: " << LightSamples() << "\n";
+  os << indent << "LightSamples: 8 to 64, with the light's size\n";
 }

@@ -30,10 +30,14 @@
  *   vtkSphericalCap::LightTransfer() is: the light's radiance 1/(π sin²rl) times ∫ max(0, n·ω)
  *   dω over the part of the cap in open cells, summed over LightSamples() stratified directions
  *   of the cap (a Fibonacci spiral, cos θ uniform), so that a light smaller than a cell takes
- *   the open share of itself, not a cell's all or nothing.
+ *   the open share of itself, not a cell's all or nothing. The samples grow with the light: 8
+ *   for each eighth of a cell the cap covers, from 8 (a sun: its share in eighths where a cell's
+ *   edge crosses it) to 64 (a cap of a cell or more), so that suns, the common light, cost an
+ *   eighth of the widest lights.
  * - SkyTransfer(): a uniform sky through the open cells, less what the lights cover:
  *   cosine-weighted (1/π)(Σ_open ∫_cell n·ω dω − the lights' cosine integrals), 1 for an open
- *   plane, or the open fraction (open cells / B − the lights' solid angle / 2π).
+ *   plane, or the open fraction (open cells / B − the lights' solid angle / 2π). The sums over
+ *   the open cells do not depend on the lights (OpenSums()): shaders get them per point.
  *
  * @sa vtkAperturePrecompute vtkHorizonLighting vtkSphericalCap
  */
@@ -93,15 +97,23 @@ public:
   static double CellCosine(int cell, int side);
 
   /**
-   * Stratified directions of a light cap that LightTransfer() sums.
+   * Stratified directions of a light cap of radius rl (vtkSphericalCap::ClampLightRadius()) that
+   * LightTransfer() sums on a mask of `bits` cells: 8 per eighth of a cell the cap covers, 8 to
+   * 64.
    */
-  static int LightSamples() { return 64; }
+  static int LightSamples(double rl, int bits);
 
   /**
-   * The GLSL declarations of the sample count, which the GLSL twin
+   * The GLSL declarations of the sample counts, which the GLSL twin
    * (vtkVisibilityMaskGLSL.glsl, in the rendering module) needs before its source.
    */
   static std::string GetGLSLConstants();
+
+  /**
+   * The open cells' solid angle (sums[0]) and ∫ n·ω dω over them (sums[1]) of a mask of `bits`
+   * cells (the same for every normal); zeros for an unusable mask.
+   */
+  VTK_WRAPEXCLUDE static void OpenSums(const unsigned char* mask, int bits, double sums[2]);
 
   /**
    * Irradiance at a point with normal n and mask (bits/8 bytes) from a light of angular radius

@@ -3,9 +3,12 @@
 // and VTK's lighting uniforms first, and these defines: APERTURE_SHADING and APERTURE_LAMBERT
 // (vtkSphericalCap's model and Lambert factor), APERTURE_LIGHT_COUNT, and optionally
 // APERTURE_PER_TEXEL (apertures from a texture), APERTURE_SKY_ENVIRONMENT (the sky from an
-// environment) and APERTURE_HORIZONS (lights and the uniform sky above per-sector horizons, with
-// vtkHorizonLightingGLSL first and apertureReadHorizons() written in at the mark below). The caps are prepared once, the aperture per fragment and the light per light,
-// so that the shading itself needs no trigonometry outside the penumbra.
+// environment), APERTURE_HORIZONS (lights and the uniform sky above per-sector horizons, with
+// vtkHorizonLightingGLSL first and apertureReadHorizons() written in at its mark below) and
+// APERTURE_VISIBILITY_MASK (lights and the uniform sky through visibility masks, evaluated per
+// vertex: apertureReadMask() at its mark below reads the interpolated results). It also needs
+// vtkApertureLightCapGLSL. The caps are prepared once, the aperture per fragment and the light
+// per light, so that the shading itself needs no trigonometry outside the penumbra.
 //
 // main() calls apertureBeginFragment(), one light function per light (VTK names each light's
 // uniforms apart: lightColor0, lightColor1, ...), then apertureEndFragment().
@@ -36,6 +39,15 @@ uniform mat3 apertureViewToModel;
 //APERTURE::Horizons::Dec
 #endif
 
+#ifdef APERTURE_VISIBILITY_MASK
+// Per light, its transfer through the mask and the solid angle of it in open cells; the uniform
+// sky through the mask (apertureReadMask() reads them, in the lights' order).
+vec2 apertureMaskLights[APERTURE_LIGHT_COUNT];
+float apertureMaskSky;
+int apertureMaskLight;
+//APERTURE::Mask::Dec
+#endif
+
 // The aperture at a fragment: the bent normal made unit (the normal n stands in where
 // interpolation shortened it to nothing) and the radius clamped to pi/2. A negative radius marks
 // a point without an aperture and stays negative for apertureAddLight() to see.
@@ -44,22 +56,6 @@ sphericalCapCap apertureCap(vec3 bent, float rp, vec3 n)
   float length = length(bent);
   return sphericalCapMakeCap(
     length > 1e-6 ? bent / length : n, clamp(rp, -1.0, 0.5 * sphericalCapPi));
-}
-
-// The cap of a sphere light of radius R whose centre is D away, asin(R/D) (pi/2 inside it), as
-// sphericalCapClampLightRadius() clamps it; the half-angle sine and cosine come from R/D by the
-// half-angle formulas.
-sphericalCapCap apertureSphereLightCap(vec3 L, float R, float D)
-{
-  float s = D > R ? R / D : 1.0;
-  float c = D > R ? sqrt((D - R) * (D + R)) / D : 0.0;
-  float r = sphericalCapAtan2(s, c);
-  if (!(r > sphericalCapMinimumLightRadius))
-  {
-    return sphericalCapMakeCap(L, sphericalCapClampLightRadius(r));
-  }
-  float halfCos = sqrt(0.5 * (1.0 + c));
-  return sphericalCapCap(L, r, 0.5 * s / halfCos, halfCos);
 }
 
 // What a fragment gathers: its unit normal, position and direction to the eye in view
@@ -112,6 +108,9 @@ apertureFragment apertureBeginFragment(vec3 n, vec3 position, float specularPowe
   f.normalModel = apertureViewToModel * n;
   apertureReadHorizons();
 #endif
+#ifdef APERTURE_VISIBILITY_MASK
+  apertureReadMask();
+#endif
   return f;
 }
 
@@ -128,7 +127,12 @@ void apertureAddLight(inout apertureFragment f, sphericalCapCap light, vec3 colo
   float seen = 1.0;
   if (f.aperture.radius >= 0.0)
   {
-#ifdef APERTURE_HORIZONS
+#if defined(APERTURE_VISIBILITY_MASK)
+    vec2 maskLight = apertureMaskLights[min(apertureMaskLight, APERTURE_LIGHT_COUNT - 1)];
+    apertureMaskLight += 1;
+    transfer = maskLight.x;
+    float coverage = maskLight.y;
+#elif defined(APERTURE_HORIZONS)
     vec2 sums;
     transfer = horizonLightingLightTransfer(
       f.normalModel, apertureViewToModel * L, light.radius, sums);
@@ -169,17 +173,12 @@ void aperturePositionalLight(vec3 direction, vec3 color, vec3 cap, int positiona
   vec3 position, vec3 attenuationCoefficients, float coneAngle, float exponent,
   float worldRadius, inout apertureFragment f)
 {
-  sphericalCapCap light = sphericalCapCap(-direction, cap.x, cap.y, cap.z);
+  sphericalCapCap light =
+    apertureLightCapAt(direction, cap, positional, position, worldRadius, f.position);
   float attenuation = 1.0;
   if (positional != 0)
   {
-    vec3 toLight = position - f.position;
-    float distanceVC = length(toLight);
-    light.axis = toLight / distanceVC;
-    if (worldRadius > 0.0)
-    {
-      light = apertureSphereLightCap(light.axis, worldRadius, distanceVC);
-    }
+    float distanceVC = length(position - f.position);
     vec3 k = attenuationCoefficients;
     attenuation = 1.0 / (k.x + k.y * distanceVC + k.z * distanceVC * distanceVC);
     if (coneAngle < 90.0)
@@ -230,6 +229,8 @@ vec4 apertureEndFragment(apertureFragment f, vec3 ambientColor, vec3 diffuseColo
 #if defined(APERTURE_SKY_ENVIRONMENT)
     diffuse += apertureSkyColor *
       apertureSkyEnvironment(f.aperture, f.covered, cosNormalBent, apertureSkyCosine != 0);
+#elif defined(APERTURE_VISIBILITY_MASK)
+    diffuse += apertureSkyColor * apertureMaskSky;
 #elif defined(APERTURE_HORIZONS)
     diffuse += apertureSkyColor *
       horizonLightingSkyTransfer(

@@ -52,6 +52,7 @@ const char* EvaluatorFS = R"(//VTK::System::Dec
 uniform sampler2D normals;
 uniform sampler2D lights;
 uniform sampler2D maskTexels;
+uniform sampler2D openSums;
 uniform int pass;
 in vec2 texCoord;
 //VTK::VisibilityMask::Dec
@@ -68,15 +69,17 @@ void main()
   }
   vec2 coverage;
   float transfer = visibilityMaskLightTransfer(p.xyz, l, p.w, coverage);
+  vec2 open = texelFetch(openSums, texel, 0).xy;
   if (pass == 0)
   {
-    gl_FragData[0] = vec4(transfer, coverage, visibilityMaskSkyTransfer(p.xyz, coverage, true));
+    gl_FragData[0] =
+      vec4(transfer, coverage, visibilityMaskSkyTransfer(p.xyz, open, coverage, true));
   }
   else
   {
     vec3 n = normalize(p.xyz);
     vec3 w = normalize(l);
-    gl_FragData[0] = vec4(visibilityMaskSkyTransfer(p.xyz, coverage, false),
+    gl_FragData[0] = vec4(visibilityMaskSkyTransfer(p.xyz, open, coverage, false),
       float(visibilityMaskCellOf(n, w)), 0.0, 0.0);
   }
 }
@@ -165,28 +168,27 @@ int TestVisibilityMaskGLSL(int, char*[])
 
   const std::vector<Case> cases = MakeCases();
   const int height = static_cast<int>(cases.size()) / Width;
-  std::vector<float> normals(4 * cases.size()), lights(4 * cases.size());
+  std::vector<float> normals(4 * cases.size()), lights(4 * cases.size()), sums(4 * cases.size());
   std::vector<float> masks(Cells / 16 * cases.size());
   for (size_t i = 0; i < cases.size(); ++i)
   {
     std::copy(cases[i].Normal, cases[i].Normal + 4, &normals[4 * i]);
     std::copy(cases[i].Light, cases[i].Light + 4, &lights[4 * i]);
+    double open[2];
+    vtkVisibilityMask::OpenSums(cases[i].Mask, Cells, open);
+    std::copy(open, open + 2, &sums[4 * i]);
     for (int h = 0; h < Cells / 16; ++h)
     {
       masks[Cells / 16 * i + h] =
         static_cast<float>(cases[i].Mask[2 * h] | (cases[i].Mask[2 * h + 1] << 8));
     }
   }
-  const vtkSmartPointer<vtkTextureObject> uploaded[3] = { evaluator.Upload(Width, height, normals),
-    evaluator.Upload(Width, height, lights), evaluator.Upload(Width * Cells / 64, height, masks) };
-  const std::vector<std::pair<const char*, vtkTextureObject*>> textures = {
-    { "normals", uploaded[0] }, { "lights", uploaded[1] }, { "maskTexels", uploaded[2] }
-  };
-  std::vector<float> cosines(Cells);
-  for (int cell = 0; cell < Cells; ++cell)
-  {
-    cosines[cell] = static_cast<float>(vtkVisibilityMask::CellCosine(cell, Side));
-  }
+  const vtkSmartPointer<vtkTextureObject> uploaded[4] = { evaluator.Upload(Width, height, normals),
+    evaluator.Upload(Width, height, lights), evaluator.Upload(Width * Cells / 64, height, masks),
+    evaluator.Upload(Width, height, sums) };
+  const std::vector<std::pair<const char*, vtkTextureObject*>> textures = { { "normals",
+                                                                              uploaded[0] },
+    { "lights", uploaded[1] }, { "maskTexels", uploaded[2] }, { "openSums", uploaded[3] } };
 
   std::string fs = EvaluatorFS;
   vtkShaderProgram::Substitute(fs, "//VTK::VisibilityMask::Dec",
@@ -204,11 +206,7 @@ int TestVisibilityMaskGLSL(int, char*[])
   for (int pass = 0; pass < 2; ++pass)
   {
     const std::vector<float> result = evaluator.Run(quad, Width, height, textures,
-      [pass, &cosines](vtkShaderProgram* program)
-      {
-        program->SetUniform1fv("visibilityMaskCellCosines", Cells, cosines.data());
-        program->SetUniformi("pass", pass);
-      });
+      [pass](vtkShaderProgram* program) { program->SetUniformi("pass", pass); });
     double worst[4] = { 0, 0, 0, 0 };
     for (size_t i = 0; i < cases.size(); ++i)
     {
@@ -216,9 +214,16 @@ int TestVisibilityMaskGLSL(int, char*[])
       Expected(cases[i], pass, want);
       const double cap = vtkSphericalCap::SolidAngleFromCapRadius(vtkSphericalCap::ClampLightRadius(
         std::isnan(cases[i].Normal[3]) ? 0.0 : cases[i].Normal[3]));
-      // A sample on a cell's edge may fall either way in single precision: 1/64 of the light.
-      const double tolerance[2][4] = { { 1.0 / 64 + 1e-3, cap / 64 + 1e-7, cap / 64 + 1e-7, 1e-3 },
-        { 1e-3, 0.5, 1.0, 1.0 } };
+      // A sample on a cell's edge may fall either way in single precision: one sample's share
+      // of the light.
+      const double share = 1.0 /
+        vtkVisibilityMask::LightSamples(
+          vtkSphericalCap::ClampLightRadius(
+            std::isnan(cases[i].Normal[3]) ? 0.0 : cases[i].Normal[3]),
+          Cells);
+      const double tolerance[2][4] = {
+        { share + 1e-3, cap * share + 1e-7, cap * share + 1e-7, 1e-3 }, { 1e-3, 0.5, 1.0, 1.0 }
+      };
       for (int k = 0; k < (pass == 0 ? 4 : 1); ++k)
       {
         const double got = result[4 * i + k], error = std::abs(got - want[k]);
