@@ -86,6 +86,7 @@ std::string Fingerprint(const Input& input, const Options& options)
   hash.Add(static_cast<double>(options.Rays));
   hash.Add(static_cast<double>(options.RaysGiven ? -1 : options.Sectors));
   hash.Add(WantsHorizons(options) && input.Heights ? 1.0 : 0.0);
+  hash.Add(WantsMasks(options) && !input.Heights ? 1.0 : 0.0);
   if (input.Heights)
   {
     int dims[3];

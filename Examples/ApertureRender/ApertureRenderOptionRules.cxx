@@ -228,8 +228,10 @@ std::vector<OptionRule> SkyRules()
     { "Lights and shading", { "--mode" }, "MODE",
       "exact (default), smoothstep, simplified, bentnormal, standard (plain VTK lighting), "
       "horizon (height fields: lights and sky above each texel's horizon in every sector, right "
-      "where one cap is wrong under a low sun), or all: one picture with a panel per mode",
-      "is not one of exact, smoothstep, simplified, bentnormal, standard, horizon, all",
+      "where one cap is wrong under a low sun), mask (meshes: lights and sky through each "
+      "point's visibility mask, right where one cap is wrong under a small light), or all: one "
+      "picture with a panel per mode",
+      "is not one of exact, smoothstep, simplified, bentnormal, standard, horizon, mask, all",
       [](const std::string& v, Options& o)
       {
         const std::vector<std::string>& names = ModeNames();

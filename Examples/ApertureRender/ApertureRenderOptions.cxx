@@ -112,13 +112,18 @@ Options::Options()
 const std::vector<std::string>& ModeNames()
 {
   static const std::vector<std::string> names = { "exact", "smoothstep", "simplified", "bentnormal",
-    "standard", "horizon" };
+    "standard", "horizon", "mask" };
   return names;
 }
 
 bool WantsHorizons(const Options& options)
 {
   return options.Mode == "horizon" || options.Mode == "all" || options.Interactive;
+}
+
+bool WantsMasks(const Options& options)
+{
+  return options.Mode == "mask" || options.Mode == "all" || options.Interactive;
 }
 
 int ParseOptions(int argc, char* argv[], Options& options, std::string& error)

@@ -84,6 +84,10 @@ const std::vector<std::string>& ModeNames();
 // all, and the window's m key).
 bool WantsHorizons(const Options& options);
 
+// Whether a mesh's visibility masks are to be kept: for the modes that can show them (mask, all,
+// and the window's m key).
+bool WantsMasks(const Options& options);
+
 // Parses argv into options. Returns 0 on success, otherwise the exit code (2) with one sentence
 // in `error`.
 int ParseOptions(int argc, char* argv[], Options& options, std::string& error);

@@ -66,7 +66,7 @@ namespace ApertureRender
 namespace
 {
 const char* const ModeLabels[] = { "Exact", "Smoothstep", "Simplified", "Bent normal",
-  "Standard VTK", "Horizon" };
+  "Standard VTK", "Horizon", "Visibility mask" };
 
 double Radians(double degrees)
 {
@@ -559,8 +559,10 @@ bool View::WriteData(const std::string& path, MessageCapture& messages, std::str
 bool View::ModeAvailable(int mode) const
 {
   auto* data = vtkDataSet::SafeDownCast(this->Apertures);
-  return mode != vtkApertureLightingInterface::HORIZON ||
-    (data && data->GetPointData()->GetArray("HorizonAngles"));
+  const char* needs = mode == vtkApertureLightingInterface::HORIZON ? "HorizonAngles"
+    : mode == vtkApertureLightingInterface::VISIBILITY_MASK         ? "VisibilityMask"
+                                                                    : nullptr;
+  return !needs || (data && data->GetPointData()->GetArray(needs));
 }
 
 int View::NextMode(int mode) const

@@ -82,7 +82,8 @@ private:
   void AddLights();
   void PlaceCamera();
   void SetMode(int mode);
-  // The modes this data can show: Horizon only where the apertures hold horizons.
+  // The modes this data can show: Horizon only where the apertures hold horizons, Visibility
+  // mask only where they hold masks.
   bool ModeAvailable(int mode) const;
   int NextMode(int mode) const;
   void ShowApertureData(bool show);

@@ -162,8 +162,9 @@ int ReadInput(const ApertureRender::Options& options, ApertureRender::MessageCap
 }
 
 // The apertures cast (rays for meshes, horizon sweeps for height fields unless --rays), with a
-// progress bar; null with the reason in `error` when the filter fails. Horizons are kept only
-// for the modes that show them (4 bytes a sector and texel).
+// progress bar; null with the reason in `error` when the filter fails. Horizons (height fields,
+// 4 bytes a sector and texel) and masks (meshes, 32 bytes and a ray a cell a point) are kept only
+// for the modes that show them.
 vtkSmartPointer<vtkDataObject> CastApertures(const ApertureRender::Options& options,
   const ApertureRender::Input& input, ApertureRender::MessageCapture& messages, std::string& error)
 {
@@ -189,6 +190,7 @@ vtkSmartPointer<vtkDataObject> CastApertures(const ApertureRender::Options& opti
   precompute->SetMaximumEdgeLength(input.MaximumEdge);
   precompute->ComputeAmbientOcclusionOn();
   precompute->SetComputeHorizonAngles(!rays && ApertureRender::WantsHorizons(options));
+  precompute->SetComputeVisibilityMask(!field && ApertureRender::WantsMasks(options));
   messages.Clear();
   const auto start = std::chrono::steady_clock::now();
   {

@@ -215,7 +215,15 @@ expect_picture("USGS DEM", [path("fuji.dem"), *FAST],
 expect_picture("sphere light and two suns",
                [bunny, *FAST, "--sphere-light", "0,0.2,0.1,0.03,2", "--sun", "200,30",
                 "--sun", "120,60,2", "--mode", "smoothstep"])
-expect_picture("every mode", [path("bunny.vtp"), *FAST, "--mode", "all"], 1000, 150)
+# A mesh adds the Visibility mask panel; under a small low light it differs from the exact cap's.
+expect_picture("every mode", [path("bunny.vtp"), *FAST, "--mode", "all"], 1200, 150)
+small_light = [path("bunny.vtp"), *FAST, "--sun", "200,30,2", "--sky", "0,0,0"]
+expect_picture("mask", [*small_light, "--mode", "mask"])
+expect_picture("mask exact", [*small_light, "--mode", "exact"])
+changed = np.abs(read_png(path("mask.png")).astype(float)
+                 - read_png(path("mask-exact.png")).astype(float)).max(axis=2) > 8
+check(changed.mean() > 0.005, f"a small light: Visibility mask differs from the exact cap on "
+      f"{changed.mean():.1%} of the picture")
 # A height field adds the Horizon panel; under a low sun it differs from the exact cap's. A mesh
 # asked for horizons warns once and shows the exact cap.
 expect_picture("every mode of a height field", [path("fuji.asc"), *NO_RAYS, "--mode", "all"],
@@ -234,6 +242,11 @@ check(result.returncode == 0 and said.count("Cannot shade with horizons") == 1 a
       os.path.exists(path("mesh-horizon.png")) and
       (read_png(path("mesh-horizon.png")) == read_png(path("mesh-exact.png"))).all(),
       "a mesh in Horizon mode: one warning, the exact cap's picture " + repr(said[-300:]))
+result = run(*low_sun, "--mode", "mask", "-o", path("field-mask.png"))
+said = result.stdout + result.stderr
+check(result.returncode == 0 and said.count("Cannot shade with visibility masks") == 1 and
+      (read_png(path("field-mask.png")) == read_png(path("exact.png"))).all(),
+      "a height field in mask mode: one warning, the exact cap's picture " + repr(said[-300:]))
 expect_picture("aperture colours", [path("fuji.dem"), *FAST, "--show", "apertures"])
 
 # The cache: computed, then read; other settings recompute it.
