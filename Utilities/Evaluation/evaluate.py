@@ -310,6 +310,40 @@ class Scene:
         return self.matrix[:, :258] @ (scale * cap * share)
 
 
+def focus_of(camera):
+    return np.array(camera.GetFocalPoint())
+
+
+def one_vertex_a_triangle(surface, values):
+    """Per-vertex values as a per-fragment mask shading would show them: bits do not
+    interpolate, so each triangle takes its first vertex's (its normal's variation aside)."""
+    cells = vtk_to_numpy(surface.GetPolys().GetConnectivityArray())
+    offsets = vtk_to_numpy(surface.GetPolys().GetOffsetsArray())
+    return values[cells[offsets[:-1]]]
+
+
+def mask_panels(scene, reference, estimates):
+    """The mask where one cap fails: the reference, the cap, the mask per vertex interpolated
+    (the mappers' choice) and per fragment, and both errors; then the same 5 times closer
+    where the per-fragment picture departs most from the interpolated one."""
+    mask = estimates["visibility mask"]
+    per_fragment = one_vertex_a_triangle(scene.surface, mask)
+    values = [reference, estimates["AAL exact"], mask, per_fragment,
+              np.abs(estimates["AAL exact"] - reference), np.abs(mask - reference)]
+    titles = ["reference", "AAL exact", "mask per vertex", "mask per fragment",
+              "|AAL exact - ref|", "|mask - ref|"]
+    # The vertex whose triangles' one-vertex values depart most from its own, smoothed by its
+    # neighbourhood: where facets would show.
+    cells = vtk_to_numpy(scene.surface.GetPolys().GetConnectivityArray()).reshape(-1, 3)
+    departure = np.zeros(len(mask))
+    np.maximum.at(departure, cells.ravel(), np.repeat(np.abs(per_fragment - mask[cells].mean(
+        axis=1)), 3))
+    points = vtk_to_numpy(scene.surface.GetPoints().GetData())
+    focus = points[np.argmax(departure)]
+    return [render_panels(scene, values, titles, 240),
+            render_panels(scene, values, [t + ", 5x" for t in titles], 240, focus, 5.0)]
+
+
 def errors(estimate, reference, facing):
     keep = facing & np.isfinite(reference)
     mean_ref = reference[keep].mean()
@@ -317,8 +351,9 @@ def errors(estimate, reference, facing):
     return diff.mean() / mean_ref, np.percentile(diff, 95) / mean_ref
 
 
-def render_panels(scene, values, titles, size):
-    """One picture per array of per-vertex values: grey 0..1, or errors in colour."""
+def render_panels(scene, values, titles, size, focus=None, zoom=1.0):
+    """One picture per array of per-vertex (or, as many as the cells, per-cell) values: grey
+    0..1, or errors in colour; the whole scene, or `zoom` times closer around `focus`."""
     window = vtkRenderWindow()
     window.SetOffScreenRendering(1)
     window.SetSize(size, size)
@@ -349,6 +384,12 @@ def render_panels(scene, values, titles, size):
     camera.SetViewUp(*up)
     renderer.ResetCamera()
     camera.Zoom(1.25)
+    if focus is not None:
+        shift = np.asarray(focus) - focus_of(camera)
+        camera.SetFocalPoint(*(focus_of(camera) + shift))
+        camera.SetPosition(*(np.array(camera.GetPosition()) + shift))
+        camera.Zoom(zoom)
+        renderer.ResetCameraClippingRange()
     grey, heat = vtkLookupTable(), vtkLookupTable()
     grey.SetRange(0.0, 1.0)
     grey.SetSaturationRange(0, 0)
@@ -362,8 +403,14 @@ def render_panels(scene, values, titles, size):
     for array, title in zip(values, titles):
         data = numpy_to_vtk(np.nan_to_num(array).astype(np.float32), deep=1)
         data.SetName("E")
-        surface.GetPointData().SetScalars(data)
+        per_cell = len(array) == surface.GetNumberOfCells() != surface.GetNumberOfPoints()
+        surface.GetPointData().SetScalars(None if per_cell else data)
+        surface.GetCellData().SetScalars(data if per_cell else None)
         surface.Modified()
+        if per_cell:
+            mapper.SetScalarModeToUseCellData()
+        else:
+            mapper.SetScalarModeToUsePointData()
         is_error = title.startswith("|")
         mapper.SetLookupTable(heat if is_error else grey)
         mapper.SetScalarRange(*(heat.GetRange() if is_error else grey.GetRange()))
@@ -402,12 +449,13 @@ def main():
         builders = ([(os.path.basename(args.mesh), lambda: mesh_scene(args.mesh, args.up))]
                     if args.mesh else []) + (
             [(os.path.basename(args.dem), lambda: dem_scene(args.dem))] if args.dem else [])
-    results, montage_rows, horizon_rows, failures = [], [], [], []
+    results, montage_rows, horizon_rows, mask_rows, failures = [], [], [], [], []
     for name, build in builders:
         surface, up, grid = build()
         scene = Scene(name, surface, up, rays, samples, grid)
         print(f"{name}: {surface.GetNumberOfPoints()} points, apertures ({rays} rays) and "
               f"visibility (k = 1026) in {scene.setup_seconds:.1f} s", flush=True)
+        worst_cap = None  # where the cap's p95 is worst at r = 0.064, for the mask's pictures
         for elevation in ELEVATIONS:
             direction = light_direction(up, elevation)
             facing = scene.normals @ direction > 0
@@ -441,6 +489,12 @@ def main():
                                 np.abs(estimates["horizon"] - reference)],
                         ["reference, sun at 8 deg", "AAL exact", "horizon", "|AAL exact - ref|",
                          "|horizon - ref|"], 240))
+                if radius == 0.064 and estimates.get("visibility mask") is not None and (
+                        worst_cap is None or
+                        cell["methods"]["AAL exact"]["p95"] > worst_cap[0]):
+                    worst_cap = (cell["methods"]["AAL exact"]["p95"], reference, estimates)
+        if worst_cap:
+            mask_rows += mask_panels(scene, worst_cap[1], worst_cap[2])
     # Checks: the paper's claims, as measured. With the lens moment, AAL exact beats bent normal
     # wherever the light has a size; with the centroid Lambert it does up to r = 0.314 (beyond,
     # the centroid overestimates by up to 2/(1 + cos r), see docs/evaluation.md).
@@ -462,7 +516,8 @@ def main():
                     failures.append(f"{where}: {new} {stat} {100 * m[new][stat]:.1f}% is worse "
                                     f"than AAL exact's {100 * m['AAL exact'][stat]:.1f}%")
     write_outputs(args, results, {"evaluation-montage": montage_rows,
-                                  "evaluation-horizon": horizon_rows}, rays, samples)
+                                  "evaluation-horizon": horizon_rows,
+                                  "evaluation-mask": mask_rows}, rays, samples)
     for failure in failures:
         print("FAIL", failure)
     return 1 if args.check and failures else 0
