@@ -13,9 +13,11 @@
 #include "vtkApertureLightCapGLSL.h"
 #include "vtkApertureLightingFS.h"
 #include "vtkApertureText.h"
+#include "vtkApertureVertexLightingVS.h"
 #include "vtkHorizonLighting.h"
 #include "vtkHorizonLightingCodeGLSL.h"
 #include "vtkHorizonLightingGLSL.h"
+#include "vtkHorizonLightingVS.h"
 #include "vtkSphericalCap.h"
 #include "vtkSphericalCapGLSL.h"
 #include "vtkVisibilityMask.h"
@@ -159,17 +161,68 @@ void PackBytes(
   }
 }
 
-// A mask's open sums (vtkVisibilityMask::OpenSums()), which do not depend on the lights, for
-// the last float of its attributes (always free: 64, 144 and 256 bits leave one to two):
-// the open cells' count plus 512 times their cosine integral over pi in 15 bits, an exact
-// integer below 2^24.
-float PackOpenSums(const unsigned char* mask, int bits)
+// The open sums of a point's mask or horizons (OpenSums() of vtkVisibilityMask or
+// vtkHorizonLighting), which do not depend on the lights, for the last float of its attributes:
+// the solid angle over 4 pi plus 4096 times the cosine integral over pi, each in 12 bits, an
+// exact integer below 2^24 (vtkApertureVertexLightingVS.glsl decodes it).
+float PackSums(const double sums[2])
 {
-  double sums[2];
-  vtkVisibilityMask::OpenSums(mask, bits, sums);
-  const long count = std::lround(sums[0] * bits / (2.0 * vtkMath::Pi()));
-  const long cosine = std::lround(std::min(1.0, sums[1] / vtkMath::Pi()) * 32767.0);
-  return static_cast<float>(count + 512 * cosine);
+  const double pi = vtkMath::Pi();
+  const long open = std::lround(std::min(1.0, std::max(0.0, sums[0] / (4.0 * pi))) * 4095.0);
+  const long cosine = std::lround(std::min(1.0, std::max(0.0, sums[1] / pi)) * 4095.0);
+  return static_cast<float>(open + 4096 * cosine);
+}
+
+// The masks' bytes (resampled to `bits`; open where there is no mask) and open sums.
+void PackMasks(vtkUnsignedCharArray* mask, vtkIdType n, int bits, const std::vector<float*>& values)
+{
+  std::vector<unsigned char> codes(bits / 8, 255);
+  const int inBits = mask ? 8 * mask->GetNumberOfComponents() : bits;
+  for (vtkIdType p = 0; p < n; ++p)
+  {
+    if (mask)
+    {
+      ResampleMask(mask->GetPointer(p * inBits / 8), inBits, bits, codes.data());
+    }
+    PackBytes(codes.data(), bits / 8, values, p);
+    double sums[2];
+    vtkVisibilityMask::OpenSums(codes.data(), bits, sums);
+    values.back()[4 * p + 3] = PackSums(sums);
+  }
+}
+
+// The horizons' 8-bit codes (resampled to `sectors`; open where there are none) and their open
+// sums around the point normals, where there are some, as the GPU sees them.
+void PackHorizons(vtkDataArray* horizons, vtkDataArray* normals, vtkIdType n, int sectors,
+  const std::vector<float*>& values)
+{
+  std::vector<float> in(horizons ? horizons->GetNumberOfComponents() : 1, -0.5f * vtkMath::Pi());
+  std::vector<double> tuple(in.size());
+  std::vector<unsigned char> codes(sectors);
+  std::vector<float> decoded(sectors);
+  for (vtkIdType p = 0; p < n; ++p)
+  {
+    if (horizons)
+    {
+      EncodePoint(horizons, p, sectors, tuple, in, codes.data());
+    }
+    else
+    {
+      EncodeHorizons(in, sectors, codes.data());
+    }
+    PackBytes(codes.data(), sectors, values, p);
+    if (normals)
+    {
+      for (int k = 0; k < sectors; ++k)
+      {
+        decoded[k] = static_cast<float>(vtkHorizonLighting::DecodeAngle(codes[k]));
+      }
+      double normal[3], sums[2];
+      normals->GetTuple(p, normal);
+      vtkHorizonLighting::OpenSums(normal, decoded.data(), sectors, sums);
+      values.back()[4 * p + 3] = PackSums(sums);
+    }
+  }
 }
 
 // Apertures reach the fragment shader as varyings in view coordinates, or as texture
@@ -238,8 +291,8 @@ std::string LightCall(int lightComplexity, int i)
     "], fragment);\n";
 }
 
-// The cap of light i at a vertex, for the masks, from the same uniforms as LightCall().
-std::string MaskLightCap(int lightComplexity, int i)
+// The cap of light i at a vertex, from the same uniforms as LightCall().
+std::string VertexLightCap(int lightComplexity, int i)
 {
   const std::string n = std::to_string(i);
   const std::string cap = "apertureLightCap[" + n + "]";
@@ -674,7 +727,8 @@ void vtkApertureLightingInterface::ReportMask(const std::string& problem)
 //------------------------------------------------------------------------------
 int vtkApertureLightingInterface::GetNumberOfPackedAttributes(int layout) const
 {
-  return AttributesForBytes(this->ShadingMode == VISIBILITY_MASK ? layout / 8 : layout);
+  // The bytes, and a float for the open sums.
+  return AttributesForBytes((this->ShadingMode == VISIBILITY_MASK ? layout / 8 : layout) + 3);
 }
 
 //------------------------------------------------------------------------------
@@ -705,38 +759,16 @@ void vtkApertureLightingInterface::PackAttributes(
     attribute->Fill(0.0);
     values.push_back(attribute->GetPointer(0));
   }
-  const int bytes = masks ? layout / 8 : layout;
-  std::vector<unsigned char> codes(bytes, masks ? 255 : 0);
   if (masks)
   {
     // CheckVisibilityMask() made sure of the array's type.
-    auto* mask = static_cast<vtkUnsignedCharArray*>(array);
-    const int inBits = mask ? 8 * mask->GetNumberOfComponents() : layout;
-    for (vtkIdType p = 0; p < n; ++p)
-    {
-      if (mask)
-      {
-        ResampleMask(mask->GetPointer(p * inBits / 8), inBits, layout, codes.data());
-      }
-      PackBytes(codes.data(), bytes, values, p);
-      values.back()[4 * p + 3] = PackOpenSums(codes.data(), layout);
-    }
+    PackMasks(static_cast<vtkUnsignedCharArray*>(array), n, layout, values);
     return;
   }
-  std::vector<float> in(array ? array->GetNumberOfComponents() : 1, -0.5f * vtkMath::Pi());
-  std::vector<double> tuple(in.size());
-  for (vtkIdType p = 0; p < n; ++p)
-  {
-    if (array)
-    {
-      EncodePoint(array, p, layout, tuple, in, codes.data());
-    }
-    else
-    {
-      EncodeHorizons(in, layout, codes.data());
-    }
-    PackBytes(codes.data(), bytes, values, p);
-  }
+  vtkDataArray* normals = data->GetPointData()->GetNormals();
+  const bool usable =
+    normals && normals->GetNumberOfComponents() == 3 && normals->GetNumberOfTuples() == n;
+  PackHorizons(array, usable ? normals : nullptr, n, layout, values);
 }
 
 //------------------------------------------------------------------------------
@@ -768,24 +800,31 @@ bool vtkApertureLightingInterface::ReplaceShaderLight(
   std::string gs = shaders[vtkShader::Geometry]->GetSource();
   std::string fs = shaders[vtkShader::Fragment]->GetSource();
   // The masks need the point normals, which VTK leaves out of flat-shaded buffers.
-  if (this->ShadingMode == VISIBILITY_MASK && packedLayout > 0 &&
-    vs.find("in vec3 normalMC;") == std::string::npos)
+  const bool normals = vs.find("in vec3 normalMC;") != std::string::npos;
+  if (this->ShadingMode == VISIBILITY_MASK && packedLayout > 0 && !normals)
   {
     this->ReportMask("flat interpolation leaves out the point normals");
     packedLayout = 0;
   }
+  // Masks, and horizons per vertex where the points have normals, are evaluated per vertex (the
+  // lights and the sky vary slowly, and a varying a light costs less than the horizons'
+  // eight); horizons otherwise per fragment, from their interpolated angles or their texture.
+  const bool perVertex = packedLayout > 0 && !perTexel && normals;
   ReplaceApertureVaryings(vs, gs, perTexel, inputTCoords);
   vtkShaderProgram::Substitute(fs, "//VTK::Light::Dec",
-    this->GetFragmentDeclarations(renderer, lightCount, perTexel, packedLayout));
+    this->GetFragmentDeclarations(
+      renderer, lightCount, perTexel, perVertex ? 0 : packedLayout, perVertex));
   vtkShaderProgram::Substitute(
     fs, "//VTK::Light::Impl", FragmentImplementation(lightComplexity, lightCount), false);
-  if (packedLayout > 0 && this->ShadingMode == HORIZON)
+  if (perVertex)
+  {
+    ReplaceVertexLightingCode(vs, gs, fs, renderer, lightComplexity, lightCount,
+      this->GetNumberOfPackedAttributes(packedLayout),
+      this->GetVertexLightingDeclarations(packedLayout));
+  }
+  else if (packedLayout > 0)
   {
     ReplaceHorizonCode(vs, gs, fs, perTexel, packedLayout);
-  }
-  if (packedLayout > 0 && this->ShadingMode == VISIBILITY_MASK)
-  {
-    ReplaceMaskCode(vs, gs, fs, renderer, lightComplexity, lightCount, packedLayout);
   }
   shaders[vtkShader::Vertex]->SetSource(vs);
   shaders[vtkShader::Geometry]->SetSource(gs);
@@ -795,7 +834,7 @@ bool vtkApertureLightingInterface::ReplaceShaderLight(
 
 //------------------------------------------------------------------------------
 std::string vtkApertureLightingInterface::GetFragmentDeclarations(
-  vtkRenderer* renderer, int lightCount, bool perTexel, int packedLayout)
+  vtkRenderer* renderer, int lightCount, bool perTexel, int horizonSectors, bool perVertex)
 {
   // The cap's model where horizons or masks are asked for: the exact one, for the environment
   // sky and for data without them.
@@ -809,14 +848,14 @@ std::string vtkApertureLightingInterface::GetFragmentDeclarations(
       << (this->SkyEnvironment ? "#define APERTURE_SKY_ENVIRONMENT\n" : "") << vtkSphericalCapGLSL
       << "\n"
       << vtkApertureLightCapGLSL << "\n";
-  if (packedLayout > 0 && this->ShadingMode == VISIBILITY_MASK)
+  if (perVertex)
   {
-    dec << "#define APERTURE_VISIBILITY_MASK\n";
+    dec << "#define APERTURE_VERTEX_LIGHTING\n";
   }
-  if (packedLayout > 0 && this->ShadingMode == HORIZON)
+  if (horizonSectors > 0)
   {
     dec << "#define APERTURE_HORIZONS\n"
-        << "#define HORIZON_LIGHTING_SECTORS " << packedLayout << "\n"
+        << "#define HORIZON_LIGHTING_SECTORS " << horizonSectors << "\n"
         << vtkHorizonLighting::GetGLSLConstants() << vtkHorizonLightingCodeGLSL << "\n"
         << vtkHorizonLightingGLSL << "\n";
   }
@@ -846,7 +885,7 @@ void vtkApertureLightingInterface::ReplaceHorizonCode(
   }
   // Per vertex: the vertex shader decodes three codes a float, four floats an attribute, and
   // hands the angles on four a varying, which interpolate across the primitive.
-  const int attributes = AttributesForBytes(sectors);
+  const int attributes = AttributesForBytes(sectors + 3); // GetNumberOfPackedAttributes()
   std::ostringstream vsDec, vsImpl, gsDec, gsImpl, fsDec;
   vsDec << "//VTK::Normal::Dec\n" << vtkHorizonLightingCodeGLSL << "\n";
   vsImpl << "//VTK::Normal::Impl\n  {\n    vec4 packedHorizons[" << attributes << "] = vec4["
@@ -885,47 +924,63 @@ void vtkApertureLightingInterface::ReplaceHorizonCode(
 }
 
 //------------------------------------------------------------------------------
-void vtkApertureLightingInterface::ReplaceMaskCode(std::string& vs, std::string& gs,
-  std::string& fs, vtkRenderer* renderer, int lightComplexity, int lightCount, int bits)
+std::string vtkApertureLightingInterface::GetVertexLightingDeclarations(int packedLayout)
 {
-  const int attributes = AttributesForBytes(bits / 8);
+  std::ostringstream dec;
+  if (this->ShadingMode == VISIBILITY_MASK)
+  {
+    dec << "#define VISIBILITY_MASK_SIDE " << vtkVisibilityMask::GetSide(packedLayout) << "\n"
+        << vtkVisibilityMask::GetGLSLConstants() << vtkVisibilityMaskGLSL << "\n"
+        << vtkVisibilityMaskVS << "\n";
+    return dec.str();
+  }
+  dec << "#define HORIZON_LIGHTING_SECTORS " << packedLayout << "\n"
+      << vtkHorizonLighting::GetGLSLConstants() << vtkHorizonLightingCodeGLSL << "\n"
+      << vtkHorizonLightingGLSL << "\n"
+      << vtkHorizonLightingVS << "\n";
+  return dec.str();
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingInterface::ReplaceVertexLightingCode(std::string& vs, std::string& gs,
+  std::string& fs, vtkRenderer* renderer, int lightComplexity, int lightCount, int attributes,
+  const std::string& modeDeclarations)
+{
   std::ostringstream vsDec, vsImpl, gsDec, gsImpl, fsDec;
   vsDec << "//VTK::Normal::Dec\n"
         << static_cast<vtkOpenGLRenderer*>(renderer)->GetLightingUniforms() << "\n"
         << vtkSphericalCap::GetGLSLConstants() << vtkSphericalCapGLSL << "\n"
         << vtkApertureLightCapGLSL << "\n"
-        << "#define VISIBILITY_MASK_SIDE " << vtkVisibilityMask::GetSide(bits) << "\n"
         << "#define APERTURE_LIGHT_COUNT " << lightCount << "\n"
-        << "#define APERTURE_MASK_ATTRIBUTES " << attributes << "\n"
-        << vtkVisibilityMask::GetGLSLConstants() << vtkVisibilityMaskGLSL << "\n"
-        << vtkVisibilityMaskVS << "\n";
-  vsImpl << "  {\n    apertureMaskUnpack(vec4[" << attributes << "](";
+        << "#define APERTURE_PACKED_ATTRIBUTES " << attributes << "\n"
+        << vtkApertureVertexLightingVS << "\n"
+        << modeDeclarations;
+  vsImpl << "  {\n    apertureVertexUnpackSums(" << GetPackedAttributeName(attributes - 1)
+         << ".w);\n    apertureVertexPrepare(vec4[" << attributes << "](";
   for (int a = 0; a < attributes; ++a)
   {
     vsDec << "in vec4 " << GetPackedAttributeName(a) << ";\n";
     vsImpl << (a ? ", " : "") << GetPackedAttributeName(a);
   }
-  vsImpl << "));\n    apertureMaskCoverage = vec2(0.0);\n";
+  vsImpl << "));\n    apertureVertexCoverage = vec2(0.0);\n";
   // Each light's transfer and coverage, then the sky, four to a varying.
   std::vector<std::string> results;
   for (int i = 0; i < lightCount; ++i)
   {
-    const std::string light = "apertureMaskLight" + std::to_string(i);
-    vsImpl << "    vec2 " << light << " = apertureMaskLight(normalMC, "
-           << MaskLightCap(lightComplexity, i) << ");\n";
+    const std::string light = "apertureVertexLight" + std::to_string(i);
+    vsImpl << "    vec2 " << light << " = apertureVertexLight(normalMC, "
+           << VertexLightCap(lightComplexity, i) << ");\n";
     results.push_back(light + ".x");
     results.push_back(light + ".y");
   }
-  results.emplace_back(
-    "visibilityMaskSkyTransfer(normalMC, apertureMaskOpen, apertureMaskCoverage, "
-    "apertureSkyCosine != 0)");
+  results.emplace_back("apertureVertexSky()");
   const int outputs = static_cast<int>(results.size() + 3) / 4;
   results.resize(4 * outputs, "0.0");
   std::ostringstream read;
-  read << "void apertureReadMask()\n{\n";
+  read << "void apertureReadVertexLighting()\n{\n";
   for (int m = 0; m < outputs; ++m)
   {
-    const std::string name = "apertureMask" + std::to_string(m);
+    const std::string name = "apertureVertexLighting" + std::to_string(m);
     vsDec << "out vec4 " << name << "VSOutput;\n";
     vsImpl << "    " << name << "VSOutput = vec4(" << results[4 * m] << ", " << results[4 * m + 1]
            << ", " << results[4 * m + 2] << ", " << results[4 * m + 3] << ");\n";
@@ -934,19 +989,23 @@ void vtkApertureLightingInterface::ReplaceMaskCode(std::string& vs, std::string&
     fsDec << "in vec4 " << name << "VSOutput;\n";
   }
   auto value = [](int k)
-  { return "apertureMask" + std::to_string(k / 4) + "VSOutput[" + std::to_string(k % 4) + "]"; };
+  {
+    return "apertureVertexLighting" + std::to_string(k / 4) + "VSOutput[" + std::to_string(k % 4) +
+      "]";
+  };
   for (int i = 0; i < lightCount; ++i)
   {
-    read << "  apertureMaskLights[" << i << "] = vec2(" << value(2 * i) << ", " << value(2 * i + 1)
-         << ");\n";
+    read << "  apertureVertexLights[" << i << "] = vec2(" << value(2 * i) << ", "
+         << value(2 * i + 1) << ");\n";
   }
-  read << "  apertureMaskSky = " << value(2 * lightCount) << ";\n  apertureMaskLight = 0;\n}\n";
+  read << "  apertureVertexSky = " << value(2 * lightCount)
+       << ";\n  apertureVertexLightIndex = 0;\n}\n";
   vsImpl << "  }\n//VTK::Light::Impl";
   vtkShaderProgram::Substitute(vs, "//VTK::Normal::Dec", vsDec.str());
   vtkShaderProgram::Substitute(vs, "//VTK::Light::Impl", vsImpl.str());
   vtkShaderProgram::Substitute(gs, "//VTK::Normal::Dec", "//VTK::Normal::Dec\n" + gsDec.str());
   vtkShaderProgram::Substitute(gs, "//VTK::Normal::Impl", "//VTK::Normal::Impl\n" + gsImpl.str());
-  vtkShaderProgram::Substitute(fs, "//APERTURE::Mask::Dec", fsDec.str() + read.str());
+  vtkShaderProgram::Substitute(fs, "//APERTURE::VertexLighting::Dec", fsDec.str() + read.str());
 }
 
 //------------------------------------------------------------------------------

@@ -137,8 +137,11 @@ public:
    * from the aperture grid (vtkWarpScalar along z, or the grid itself) lies; actors may rotate and
    * scale uniformly. On the GPU each horizon takes 8 bits (vtkHorizonLighting::EncodeAngle());
    * more than 32 sectors are resampled to 32 (linear in azimuth). Per vertex they travel as
-   * three vertex attributes; per texel as a 2D texture array of 4 sectors a layer (32 bytes a
-   * texel at 32 sectors), filtered linearly between texels. The uniform sky is the cosine-weighted
+   * three vertex attributes, with their open sums around the point normals, and the vertex
+   * shader shades the lights and the sky where the points have normals (the fragments
+   * interpolate the results), otherwise the fragments shade from interpolated angles; per texel
+   * as a 2D texture array of 4 sectors a layer (32 bytes a texel at 32 sectors), filtered
+   * linearly between texels and shaded per fragment. The uniform sky is the cosine-weighted
    * sky through the sectors' open wedges (or their open fraction without SkyCosineWeighting); an
    * environment sky still comes through the cap.
    */
@@ -359,7 +362,7 @@ private:
   // The fragment shader's declarations: VTK's lighting uniforms, the GLSL sources and the
   // defines that configure them.
   std::string GetFragmentDeclarations(
-    vtkRenderer* renderer, int lightCount, bool perTexel, int packedLayout);
+    vtkRenderer* renderer, int lightCount, bool perTexel, int horizonSectors, bool perVertex);
   // The parts of SetShaderParameters().
   void SetSkyParameters(vtkShaderProgram* program, vtkRenderer* renderer);
   void SetLightParameters(vtkShaderProgram* program, vtkRenderer* renderer);
@@ -373,10 +376,13 @@ private:
   // shaders' decoding and passing of the horizons.
   static void ReplaceHorizonCode(
     std::string& vs, std::string& gs, std::string& fs, bool perTexel, int sectors);
-  // The vertex shader's evaluation of the masks, per light and for the sky, and the passing of
-  // the results to the fragment shader's apertureReadMask().
-  static void ReplaceMaskCode(std::string& vs, std::string& gs, std::string& fs,
-    vtkRenderer* renderer, int lightComplexity, int lightCount, int bits);
+  // The vertex shader's evaluation of the masks or horizons (the mode's declarations), per
+  // light and for the sky, and the passing of the results to the fragment shader's
+  // apertureReadVertexLighting().
+  std::string GetVertexLightingDeclarations(int packedLayout);
+  static void ReplaceVertexLightingCode(std::string& vs, std::string& gs, std::string& fs,
+    vtkRenderer* renderer, int lightComplexity, int lightCount, int attributes,
+    const std::string& modeDeclarations);
   // Warns about a new problem (none when empty) once, and remembers it; the same for the masks.
   void Report(const std::string& problem);
   void ReportMask(const std::string& problem);

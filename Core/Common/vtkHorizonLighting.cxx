@@ -183,18 +183,32 @@ double vtkHorizonLighting::LightTransfer(const double normal[3], const float* ho
 double vtkHorizonLighting::SkyTransfer(const double normal[3], const float* horizons, int sectors,
   double coverage, double cosineCoverage, bool cosineWeighted)
 {
-  double n[3];
+  double n[3], open[2];
   if (sectors < 1 || std::isnan(coverage) || std::isnan(cosineCoverage) ||
     !vtkSphericalCap::UnitAxis(normal, n))
   {
     return 0.0;
+  }
+  OpenSums(n, horizons, sectors, open);
+  return cosineWeighted ? std::max(0.0, open[1] - cosineCoverage) / Pi
+                        : std::max(0.0, open[0] - coverage) / (2.0 * Pi);
+}
+
+//------------------------------------------------------------------------------
+void vtkHorizonLighting::OpenSums(
+  const double normal[3], const float* horizons, int sectors, double sums[2])
+{
+  double n[3];
+  sums[0] = sums[1] = 0.0;
+  if (sectors < 1 || !horizons || !vtkSphericalCap::UnitAxis(normal, n))
+  {
+    return;
   }
   const double width = 2.0 * Pi / sectors;
   // The sectors' bounds and middles by rotation, without trigonometry per sector.
   const double step[2] = { std::cos(width), std::sin(width) };
   const double halfStep[2] = { std::cos(0.5 * width), std::sin(0.5 * width) };
   double bound[2] = { 1.0, 0.0 }; // cos, sin of the sector's first azimuth
-  double open = 0.0, openCosine = 0.0;
   for (int k = 0; k < sectors; ++k)
   {
     const double next[2] = { bound[0] * step[0] - bound[1] * step[1],
@@ -213,14 +227,12 @@ double vtkHorizonLighting::SkyTransfer(const double normal[3], const float* hori
     }
     // Over elevations e … π/2: solid angle, ∫ cos²e de and ∫ sin e cos e de.
     const double horizontal = 0.25 * Pi - 0.5 * (e + sinE * cosE);
-    open += width * (1.0 - sinE);
-    openCosine += (n[0] * (next[1] - bound[1]) + n[1] * (bound[0] - next[0])) * horizontal +
+    sums[0] += width * (1.0 - sinE);
+    sums[1] += (n[0] * (next[1] - bound[1]) + n[1] * (bound[0] - next[0])) * horizontal +
       n[2] * width * 0.5 * cosE * cosE;
     bound[0] = next[0];
     bound[1] = next[1];
   }
-  return cosineWeighted ? std::max(0.0, openCosine - cosineCoverage) / Pi
-                        : std::max(0.0, open - coverage) / (2.0 * Pi);
 }
 
 //------------------------------------------------------------------------------

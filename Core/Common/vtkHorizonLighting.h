@@ -106,6 +106,13 @@ public:
   VTK_WRAPEXCLUDE static double SkyTransfer(const double n[3], const float* horizons, int sectors,
     double coverage, double cosineCoverage, bool cosineWeighted);
 
+  /**
+   * The open wedges' solid angle (sums[0]) and ∫ n·ω dω over them (sums[1]), which do not
+   * depend on the lights (the mappers pack them per vertex); zeros for unusable input.
+   */
+  VTK_WRAPEXCLUDE static void OpenSums(
+    const double n[3], const float* horizons, int sectors, double sums[2]);
+
   ///@{
   /**
    * The same for point `point` of a `HorizonAngles` array (one component per sector), for

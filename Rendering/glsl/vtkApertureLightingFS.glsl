@@ -5,8 +5,9 @@
 // APERTURE_PER_TEXEL (apertures from a texture), APERTURE_SKY_ENVIRONMENT (the sky from an
 // environment), APERTURE_HORIZONS (lights and the uniform sky above per-sector horizons, with
 // vtkHorizonLightingGLSL first and apertureReadHorizons() written in at its mark below) and
-// APERTURE_VISIBILITY_MASK (lights and the uniform sky through visibility masks, evaluated per
-// vertex: apertureReadMask() at its mark below reads the interpolated results). It also needs
+// APERTURE_VERTEX_LIGHTING (lights and the uniform sky evaluated per vertex, through visibility
+// masks or above horizons: apertureReadVertexLighting() at its mark below reads the interpolated
+// results). It also needs
 // vtkApertureLightCapGLSL. The caps are prepared once, the aperture per fragment and the light
 // per light, so that the shading itself needs no trigonometry outside the penumbra.
 //
@@ -39,13 +40,13 @@ uniform mat3 apertureViewToModel;
 //APERTURE::Horizons::Dec
 #endif
 
-#ifdef APERTURE_VISIBILITY_MASK
-// Per light, its transfer through the mask and the solid angle of it in open cells; the uniform
-// sky through the mask (apertureReadMask() reads them, in the lights' order).
-vec2 apertureMaskLights[APERTURE_LIGHT_COUNT];
-float apertureMaskSky;
-int apertureMaskLight;
-//APERTURE::Mask::Dec
+#ifdef APERTURE_VERTEX_LIGHTING
+// Per light, its transfer and the solid angle of it the point sees; the uniform sky
+// (apertureReadVertexLighting() reads them, in the lights' order, interpolated).
+vec2 apertureVertexLights[APERTURE_LIGHT_COUNT];
+float apertureVertexSky;
+int apertureVertexLightIndex;
+//APERTURE::VertexLighting::Dec
 #endif
 
 // The aperture at a fragment: the bent normal made unit (the normal n stands in where
@@ -108,8 +109,8 @@ apertureFragment apertureBeginFragment(vec3 n, vec3 position, float specularPowe
   f.normalModel = apertureViewToModel * n;
   apertureReadHorizons();
 #endif
-#ifdef APERTURE_VISIBILITY_MASK
-  apertureReadMask();
+#ifdef APERTURE_VERTEX_LIGHTING
+  apertureReadVertexLighting();
 #endif
   return f;
 }
@@ -127,11 +128,12 @@ void apertureAddLight(inout apertureFragment f, sphericalCapCap light, vec3 colo
   float seen = 1.0;
   if (f.aperture.radius >= 0.0)
   {
-#if defined(APERTURE_VISIBILITY_MASK)
-    vec2 maskLight = apertureMaskLights[min(apertureMaskLight, APERTURE_LIGHT_COUNT - 1)];
-    apertureMaskLight += 1;
-    transfer = maskLight.x;
-    float coverage = maskLight.y;
+#if defined(APERTURE_VERTEX_LIGHTING)
+    vec2 vertexLight =
+      apertureVertexLights[min(apertureVertexLightIndex, APERTURE_LIGHT_COUNT - 1)];
+    apertureVertexLightIndex += 1;
+    transfer = vertexLight.x;
+    float coverage = vertexLight.y;
 #elif defined(APERTURE_HORIZONS)
     vec2 sums;
     transfer = horizonLightingLightTransfer(
@@ -229,8 +231,8 @@ vec4 apertureEndFragment(apertureFragment f, vec3 ambientColor, vec3 diffuseColo
 #if defined(APERTURE_SKY_ENVIRONMENT)
     diffuse += apertureSkyColor *
       apertureSkyEnvironment(f.aperture, f.covered, cosNormalBent, apertureSkyCosine != 0);
-#elif defined(APERTURE_VISIBILITY_MASK)
-    diffuse += apertureSkyColor * apertureMaskSky;
+#elif defined(APERTURE_VERTEX_LIGHTING)
+    diffuse += apertureSkyColor * apertureVertexSky;
 #elif defined(APERTURE_HORIZONS)
     diffuse += apertureSkyColor *
       horizonLightingSkyTransfer(

@@ -8,13 +8,15 @@
   See LICENSE for details.
 
 =========================================================================*/
-// The Horizon mode of vtkApertureLightingMapper, pixel by pixel: camera-facing quads (the
-// model's +z toward the camera is "up"), each with its own normal and horizons, lit by suns of
-// several sizes low over the horizons, by a sphere light and by the sky. Every tested pixel must
-// match vtkHorizonLighting on the 8-bit horizons within 1/255, per vertex (24 sectors, in vertex
-// attributes, through vtkApertureLightingMapper and through vtkCompositeApertureLightingMapper
-// with the quads in two blocks) and per texel (48 sectors, resampled to 32 in a texture array);
-// data without horizons, or with bad ones, warn once and get the exact cap.
+// The Horizon mode of vtkApertureLightingMapper, pixel by pixel: camera-facing squares of two
+// triangles (the model's +z toward the camera is "up"), each with its own normal and horizons,
+// lit by suns of several sizes low over the horizons, by a sphere light and by the sky. Every
+// tested pixel must match vtkHorizonLighting on the 8-bit horizons within 1/255: per vertex (24
+// sectors in vertex attributes, through vtkApertureLightingMapper and through
+// vtkCompositeApertureLightingMapper with the squares in two blocks) at the triangle's vertices,
+// interpolated, as the vertex shader evaluates them; per texel (48 sectors, resampled to 32 in a
+// texture array) at the pixel, and per fragment from interpolated angles where the points have
+// no normals. Data without horizons, or with bad ones, warn once and get the exact cap.
 
 #include "vtkApertureLightingMapper.h"
 #include "vtkApertureTestHarness.h"
@@ -137,8 +139,10 @@ vtkSmartPointer<vtkPolyData> MakeMesh(const std::vector<Quad>& quads)
         std::vector<double> h(q.Horizons.begin(), q.Horizons.end());
         horizons->InsertNextTuple(h.data());
       }
-      const vtkIdType quad[4] = { first, first + 1, first + 2, first + 3 };
-      cells->InsertNextCell(4, quad);
+      const vtkIdType lower[3] = { first, first + 1, first + 2 };
+      const vtkIdType upper[3] = { first, first + 2, first + 3 };
+      cells->InsertNextCell(3, lower);
+      cells->InsertNextCell(3, upper);
     }
   }
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
@@ -216,8 +220,10 @@ public:
     this->Mapper->GetApertureLighting()->AddObserver(vtkCommand::WarningEvent, this->Observer);
   }
 
-  // Renders a scene and returns the largest difference (/255) from the expected pixels.
-  double Run(const Scene& s, const std::vector<Quad>& quads, int gpuSectors, bool cap)
+  // Renders a scene and returns the largest difference (/255) from the expected pixels: at the
+  // pixel, or per vertex, at the vertices of the pixel's triangle, interpolated.
+  double Run(
+    const Scene& s, const std::vector<Quad>& quads, int gpuSectors, bool cap, bool perVertex)
   {
     this->Mapper->SetSkyIntensity(s.Sky);
     this->Light->SetPositional(s.Positional);
@@ -234,12 +240,26 @@ public:
       {
         const Quad& q = quads[i + Grid * j];
         const std::vector<float> h = AsTheGPUSees(q.Horizons, gpuSectors);
+        const double x0 = -0.5 * Side + Size * i, y0 = -0.5 * Side + Size * j;
+        double corner[4];
+        const double offsets[4][2] = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } };
+        for (int c = 0; c < 4; ++c)
+        {
+          const double p[3] = { x0 + Size * offsets[c][0], y0 + Size * offsets[c][1], 0.0 };
+          corner[c] = Expected(s, q.Normal, h, p, this->Intensity, cap);
+        }
         for (int py = Size * j + 3; py < Size * (j + 1) - 3; py += 4)
         {
           for (int px = Size * i + 3; px < Size * (i + 1) - 3; px += 4)
           {
             const double p[3] = { -0.5 * Side + px + 0.5, -0.5 * Side + py + 0.5, 0.0 };
-            const double want = 255.0 * Expected(s, q.Normal, h, p, this->Intensity, cap);
+            // Barycentric in the lower (0, 1, 2) or upper (0, 2, 3) triangle.
+            const double u = (p[0] - x0) / Size, v = (p[1] - y0) / Size;
+            const double interpolated = u >= v
+              ? (1.0 - u) * corner[0] + (u - v) * corner[1] + v * corner[2]
+              : (1.0 - v) * corner[0] + u * corner[2] + (v - u) * corner[3];
+            const double want = 255.0 *
+              (perVertex ? interpolated : Expected(s, q.Normal, h, p, this->Intensity, cap));
             const double d = std::abs(pixels->GetValue(3 * (px + Side * py)) - want);
             worst = std::max(worst, d);
           }
@@ -280,7 +300,7 @@ void TestPerVertex(Bench& bench)
   bench.Mapper->SetInputData(mesh);
   for (const Scene& s : Scenes())
   {
-    const double worst = bench.Run(s, quads, 24, false);
+    const double worst = bench.Run(s, quads, 24, false, true);
     std::cout << "per vertex, 24 sectors, " << (s.Positional ? "sphere light R=" : "sun r=")
               << s.Radius << ", sky " << s.Sky << ": max |GPU - CPU| = " << worst << "/255\n";
     // 0.5 for the 8-bit rounding, 0.5 for single precision.
@@ -290,17 +310,37 @@ void TestPerVertex(Bench& bench)
   Check(!bench.Observer->GetWarning(), "good horizons shade without a warning");
   bench.Observer->Clear();
 
+  // Without point normals the horizons interpolate as angles and shade per fragment, around
+  // the facets' normal (the view's +z).
+  std::vector<Quad> facets = quads;
+  for (Quad& q : facets)
+  {
+    q.Normal[0] = q.Normal[1] = 0.0;
+    q.Normal[2] = 1.0;
+  }
+  auto bare = MakeMesh(quads);
+  bare->GetPointData()->SetNormals(nullptr);
+  bench.Mapper->SetInputData(bare);
+  for (const Scene& s : Scenes())
+  {
+    const double worst = bench.Run(s, facets, 24, false, false);
+    std::cout << "per fragment (no normals), 24 sectors: max |GPU - CPU| = " << worst << "/255\n";
+    Check(worst <= 1.0, "Horizon pixels per fragment differ from vtkHorizonLighting (/255)", worst,
+      1.0);
+  }
+  bench.Mapper->SetInputData(mesh);
+
   // Bad horizons, then none: one warning each, and the exact cap.
   vtkDataArray* horizons = mesh->GetPointData()->GetArray("HorizonAngles");
   horizons->SetComponent(7, 3, std::numeric_limits<double>::quiet_NaN());
   horizons->Modified();
   const Scene s = Scenes()[1];
-  double worst = bench.Run(s, quads, 24, true);
+  double worst = bench.Run(s, quads, 24, true, true);
   Check(worst <= 1.0, "NaN horizons give the exact cap (/255)", worst, 1.0);
   Check(bench.Observer->GetWarningMessage().find("not angles") != std::string::npos,
     "NaN horizons warn");
   bench.Observer->Clear();
-  bench.Run(s, quads, 24, true);
+  bench.Run(s, quads, 24, true, true);
   Check(!bench.Observer->GetWarning(), "a persisting problem warns once");
   vtkNew<vtkFloatArray> three;
   three->SetName("HorizonAngles");
@@ -308,20 +348,20 @@ void TestPerVertex(Bench& bench)
   three->SetNumberOfTuples(mesh->GetNumberOfPoints());
   three->Fill(0.1);
   mesh->GetPointData()->AddArray(three);
-  worst = bench.Run(s, quads, 24, true);
+  worst = bench.Run(s, quads, 24, true, true);
   Check(worst <= 1.0, "horizons of 3 sectors give the exact cap (/255)", worst, 1.0);
   Check(bench.Observer->GetWarningMessage().find("3 components") != std::string::npos,
     "horizons of 3 sectors warn");
   bench.Observer->Clear();
   mesh->GetPointData()->RemoveArray("HorizonAngles");
-  worst = bench.Run(s, quads, 24, true);
+  worst = bench.Run(s, quads, 24, true, true);
   Check(worst <= 1.0, "missing horizons give the exact cap (/255)", worst, 1.0);
   Check(bench.Observer->GetWarningMessage().find("ComputeHorizonAngles") != std::string::npos,
     "missing horizons warn");
   bench.Observer->Clear();
 }
 
-// The same quads in two blocks through the composite mapper.
+// The same squares in two blocks through the composite mapper.
 void TestComposite(Bench& bench)
 {
   const std::vector<Quad> quads = MakeQuads(24);
@@ -335,8 +375,10 @@ void TestComposite(Bench& bench)
     const vtkIdType last = half == low ? Grid * Grid / 2 : Grid * Grid;
     for (vtkIdType c = first; c < last; ++c)
     {
-      const vtkIdType quad[4] = { 4 * c, 4 * c + 1, 4 * c + 2, 4 * c + 3 };
-      cells->InsertNextCell(4, quad);
+      const vtkIdType lower[3] = { 4 * c, 4 * c + 1, 4 * c + 2 };
+      const vtkIdType upper[3] = { 4 * c, 4 * c + 2, 4 * c + 3 };
+      cells->InsertNextCell(3, lower);
+      cells->InsertNextCell(3, upper);
     }
     half->SetPolys(cells);
   }
@@ -353,7 +395,7 @@ void TestComposite(Bench& bench)
   for (const Scene& s : Scenes())
   {
     composite->GetApertureLighting()->SetSkyIntensity(s.Sky);
-    const double worst = bench.Run(s, quads, 24, false);
+    const double worst = bench.Run(s, quads, 24, false, true);
     std::cout << "composite, two blocks: max |GPU - CPU| = " << worst << "/255\n";
     Check(worst <= 1.0, "Horizon pixels of the composite mapper differ (/255)", worst, 1.0);
   }
@@ -394,7 +436,7 @@ void TestPerTexel(Bench& bench)
   bench.Mapper->SetApertureImage(image);
   for (const Scene& s : Scenes())
   {
-    const double worst = bench.Run(s, quads, 32, false);
+    const double worst = bench.Run(s, quads, 32, false, false);
     std::cout << "per texel, 48 sectors as 32, " << (s.Positional ? "sphere light R=" : "sun r=")
               << s.Radius << ", sky " << s.Sky << ": max |GPU - CPU| = " << worst << "/255\n";
     Check(
