@@ -185,7 +185,7 @@ bool WalkBinary(const std::string& bytes, size_t offset, const std::vector<Eleme
         const size_t need = p.CountSize > 0 ? p.CountSize : p.Size;
         if (bytes.size() - offset < need)
         {
-          problem = "is truncated (in its " + element.Name + " elements)";
+          problem = "is truncated (in its " + vtkApertureText::Quote(element.Name) + " elements)";
           return false;
         }
         if (p.CountSize == 0)
@@ -198,8 +198,8 @@ bool WalkBinary(const std::string& bytes, size_t offset, const std::vector<Eleme
         offset += p.CountSize;
         if (count > (bytes.size() - offset) / p.Size)
         {
-          problem = "is truncated or damaged (a list in its " + element.Name +
-            " elements runs past the end)";
+          problem = "is truncated or damaged (a list in its " +
+            vtkApertureText::Quote(element.Name) + " elements runs past the end)";
           return false;
         }
         if (IsIndexList(element, p))
@@ -235,12 +235,14 @@ bool WalkASCII(const std::string& bytes, size_t offset, const std::vector<Elemen
       // vtkPLY reads no line at the end of the file without its newline.
       if (!std::getline(body, line) || body.eof())
       {
-        problem = "is truncated (it has fewer " + element.Name + " lines than its header says)";
+        problem = "is truncated (it has fewer " + vtkApertureText::Quote(element.Name) +
+          " lines than its header says)";
         return false;
       }
       if ((element.Name == "vertex" || element.Name == "face") && !IsLineText(line))
       {
-        problem = "is damaged (a " + element.Name + " line is not text, or too long)";
+        problem = "is damaged (a " + vtkApertureText::Quote(element.Name) +
+          " line is not text, or too long)";
         return false;
       }
       std::istringstream words(line);
@@ -259,7 +261,8 @@ bool WalkASCII(const std::string& bytes, size_t offset, const std::vector<Elemen
         }
         if (at > values.size() || values.size() - at < need)
         {
-          problem = "is damaged (a " + element.Name + " line has too few values)";
+          problem =
+            "is damaged (a " + vtkApertureText::Quote(element.Name) + " line has too few values)";
           return false;
         }
         if (IsIndexList(element, p))
@@ -296,12 +299,14 @@ bool AddElementOrProperty(const std::string& keyword, std::istringstream& words,
     words >> element.Name >> count;
     if (!elements.empty() && elements.back().Properties.empty())
     {
-      problem = "is damaged (element " + elements.back().Name + " has no properties)";
+      problem = "is damaged (element " + vtkApertureText::Quote(elements.back().Name) +
+        " has no properties)";
       return false;
     }
     if (!(count >= 0.0 && count < 4e9))
     {
-      problem = "is damaged (element " + element.Name + " has an invalid count)";
+      problem =
+        "is damaged (element " + vtkApertureText::Quote(element.Name) + " has an invalid count)";
       return false;
     }
     element.Count = static_cast<uint64_t>(count);

@@ -18,6 +18,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkXMLPolyDataWriter.h"
 
 #include <cstdint>
@@ -74,10 +75,40 @@ vtkNew<vtkPolyData> Pyramid()
   return pd;
 }
 
-std::string Vtp(int mode)
+// The pyramid with what the mappers' modes beyond one cap read: point normals, 8 sectors of
+// horizons and 64-bit visibility masks.
+void AddBeyondOneCap(vtkPolyData* pyramid)
+{
+  vtkNew<vtkFloatArray> normals, horizons;
+  vtkNew<vtkUnsignedCharArray> masks;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  horizons->SetName("HorizonAngles");
+  horizons->SetNumberOfComponents(8);
+  masks->SetName("VisibilityMask");
+  masks->SetNumberOfComponents(8);
+  for (vtkIdType i = 0; i < 5; ++i)
+  {
+    normals->InsertNextTuple3(0.0, 0.0, 1.0);
+    for (int k = 0; k < 8; ++k)
+    {
+      horizons->InsertNextValue(0.1f * static_cast<float>(k - 4));
+      masks->InsertNextValue(static_cast<unsigned char>(37 * (i + k)));
+    }
+  }
+  pyramid->GetPointData()->SetNormals(normals);
+  pyramid->GetPointData()->AddArray(horizons);
+  pyramid->GetPointData()->AddArray(masks);
+}
+
+std::string Vtp(int mode, bool beyondOneCap = false)
 {
   vtkNew<vtkXMLPolyDataWriter> writer;
   vtkNew<vtkPolyData> pyramid = Pyramid();
+  if (beyondOneCap)
+  {
+    AddBeyondOneCap(pyramid);
+  }
   writer->SetInputData(pyramid);
   writer->WriteToOutputStringOn();
   writer->SetDataMode(mode);
@@ -116,5 +147,6 @@ std::vector<FuzzSeed> MeshFuzzSeeds()
     Seed("pyramid-ascii", VTP, Vtp(vtkXMLWriter::Ascii)),
     Seed("pyramid-base64", VTP, Vtp(vtkXMLWriter::Binary)),
     Seed("pyramid-appended", VTP, Vtp(vtkXMLWriter::Appended)),
+    Seed("pyramid-horizons-masks", VTP, Vtp(vtkXMLWriter::Ascii, true)),
   };
 }
