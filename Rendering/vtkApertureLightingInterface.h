@@ -156,11 +156,12 @@ public:
    * bits/8 components, its cells in the tangent frame of the dataset's point normals (which the
    * mode needs, with an interpolation other than flat), in the model's frame; actors may rotate
    * and scale uniformly. Bits do not interpolate, so the mask is evaluated per vertex, in the
-   * vertex shader: each light's transfer through the open cells (vtkVisibilityMask's 64 samples
-   * of the light's cap) and the uniform sky through them, which the fragments interpolate (a
-   * mask per fragment would take the bits of one vertex of each triangle, and its facets show).
+   * vertex shader: each light's transfer through the open cells (vtkVisibilityMask's 8 to 64
+   * samples of the light's cap) and the uniform sky through them, which the fragments interpolate
+   * (a mask per fragment would take the bits of one vertex of each triangle, and its facets show).
    * On the GPU a mask has at most 256 bits (32 bytes, three vertex attributes); finer masks are
-   * resampled (a coarse cell is open where most of the fine cells under its 2 x 2 sub-grid are).
+   * resampled (a coarse cell is open where at least half of its 2 x 2 sub-grid falls in open
+   * fine cells).
    * Both faces of a surface shade as its front. An environment sky still comes through the cap.
    */
   void SetVisibilityMaskArrayName(const char* name);

@@ -154,7 +154,7 @@ vtkPolyData* vtkApertureLightingMapper::GetPackedInput(vtkPolyData* input)
   const vtkMTimeType time = std::max(
     { input->GetMTime(), horizons ? horizons->GetMTime() : 0, masks ? masks->GetMTime() : 0 });
   // Horizons' layouts (sectors, at most 32) and masks' (bits, at least 64) never meet.
-  if (!this->PackedInput || time > this->PackedTime ||
+  if (!this->PackedInput || input != this->PackedSource || time > this->PackedTime ||
     this->PackedInputLayout != this->PackedLayout)
   {
     std::vector<vtkSmartPointer<vtkFloatArray>> attributes;
@@ -169,13 +169,25 @@ vtkPolyData* vtkApertureLightingMapper::GetPackedInput(vtkPolyData* input)
     }
     this->PackedTime = time;
     this->PackedInputLayout = this->PackedLayout;
+    this->PackedSource = input;
   }
   return this->PackedInput;
 }
 
 //------------------------------------------------------------------------------
+bool vtkApertureLightingMapper::GetNeedToRebuildBufferObjects(
+  vtkRenderer* renderer, vtkActor* actor)
+{
+  // The packed attributes keep their names from one layout (or array name) to another.
+  return this->Superclass::GetNeedToRebuildBufferObjects(renderer, actor) ||
+    this->BufferLayout != this->PackedLayout || this->BufferTime < this->Lighting->GetShaderMTime();
+}
+
+//------------------------------------------------------------------------------
 void vtkApertureLightingMapper::BuildBufferObjects(vtkRenderer* renderer, vtkActor* actor)
 {
+  this->BufferLayout = this->PackedLayout;
+  this->BufferTime = this->Lighting->GetShaderMTime();
   const bool packed =
     this->PackedLayout > 0 && (this->State & Apertures) && !(this->State & PerTexel);
   if (!packed || !this->CurrentInput)

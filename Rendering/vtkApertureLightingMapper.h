@@ -182,6 +182,7 @@ protected:
   // Horizons and masks per vertex reach the buffers from a shallow copy of the input that holds
   // them packed, so that the input keeps its arrays.
   void BuildBufferObjects(vtkRenderer* renderer, vtkActor* actor) override;
+  bool GetNeedToRebuildBufferObjects(vtkRenderer* renderer, vtkActor* actor) override;
 
   vtkNew<vtkApertureLightingInterface> Lighting;
 
@@ -197,7 +198,11 @@ private:
   vtkSmartPointer<vtkPolyData> PackedInput;
   vtkMTimeType PackedTime = 0;
   int PackedInputLayout = 0;
+  vtkPolyData* PackedSource = nullptr; // compared, never dereferenced
   int PackedLayout = 0;
+  // What the vertex buffers were built with.
+  int BufferLayout = 0;
+  vtkMTimeType BufferTime = 0;
 
   // Whether the input's cells name only its points (checked when the input changes): VTK's
   // buffer code reads through them unchecked.

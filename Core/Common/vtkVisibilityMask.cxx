@@ -251,12 +251,17 @@ void vtkVisibilityMask::OpenSums(const unsigned char* mask, int bits, double sum
 {
   sums[0] = sums[1] = 0.0;
   const int side = GetSide(bits);
-  for (int cell = 0; mask && side > 0 && cell < bits; ++cell)
+  if (!mask || side == 0)
+  {
+    return;
+  }
+  const std::vector<double>& cosines = CellCosines(side); // once: it takes a lock
+  for (int cell = 0; cell < bits; ++cell)
   {
     if (IsOpen(mask, cell))
     {
       sums[0] += 2.0 * Pi / bits;
-      sums[1] += CellCosine(cell, side);
+      sums[1] += cosines[cell];
     }
   }
 }

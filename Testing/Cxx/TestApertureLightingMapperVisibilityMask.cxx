@@ -349,6 +349,19 @@ void TestPerVertex(Bench& bench)
   RunScenes(bench, squares, "256 bits");
   Check(!bench.Observer->GetWarning(), "good masks shade without a warning");
 
+  // Data with horizons too: after a frame in Horizon mode, whose packed attributes have the
+  // masks' names, the masks are packed again.
+  vtkNew<vtkFloatArray> horizons;
+  horizons->SetName("HorizonAngles");
+  horizons->SetNumberOfComponents(32);
+  horizons->SetNumberOfTuples(mesh->GetNumberOfPoints());
+  horizons->Fill(0.2);
+  mesh->GetPointData()->AddArray(horizons);
+  bench.Mapper->SetShadingModeToHorizon();
+  bench.Window->Render();
+  bench.Mapper->SetShadingModeToVisibilityMask();
+  RunScenes(bench, squares, "256 bits after Horizon");
+
   // Finer masks go to the GPU as 256 bits; made of 2 x 2 blocks, they lose nothing: they shade
   // as the 256-bit masks of their blocks (the same open region, and the samples of 256 cells).
   const std::vector<Square> fine = MakeSquares(1024, true);
