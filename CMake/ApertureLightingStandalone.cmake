@@ -1,5 +1,5 @@
 # Standalone build of ApertureLighting against an installed VTK 9.1: its modules (Core/, IO/*/,
-# Rendering/ and the umbrella VTK::ApertureLighting), the Python package `aperturelighting`, the
+# Rendering/, Rendering/Volume/, Volume/ and the umbrella VTK::ApertureLighting), the Python package `aperturelighting`, the
 # CMake package `ApertureLighting` and the tests.
 
 include(GNUInstallDirs)
@@ -14,6 +14,7 @@ set(_aperture_vtk_components
   ParallelCore
   RenderingCore
   RenderingOpenGL2
+  RenderingVolumeOpenGL2
   opengl
   vtksys
   zlib)
@@ -86,12 +87,15 @@ set(APERTURELIGHTING_MODULE_FILES
   "${CMAKE_CURRENT_SOURCE_DIR}/IO/GDAL/vtk.module"
   "${CMAKE_CURRENT_SOURCE_DIR}/IO/Image/vtk.module"
   "${CMAKE_CURRENT_SOURCE_DIR}/IO/OpenEXR/vtk.module"
-  "${CMAKE_CURRENT_SOURCE_DIR}/Rendering/vtk.module")
+  "${CMAKE_CURRENT_SOURCE_DIR}/Rendering/vtk.module"
+  "${CMAKE_CURRENT_SOURCE_DIR}/Rendering/Volume/vtk.module"
+  "${CMAKE_CURRENT_SOURCE_DIR}/Volume/vtk.module")
 vtk_module_scan(
   MODULE_FILES      ${APERTURELIGHTING_MODULE_FILES}
   REQUEST_MODULES   VTK::ApertureLightingCore VTK::ApertureLightingIOGDAL
                     VTK::ApertureLightingIOImage VTK::ApertureLightingIOOpenEXR
-                    VTK::ApertureLightingRendering
+                    VTK::ApertureLightingRendering VTK::ApertureLightingVolume
+                    VTK::ApertureLightingRenderingVolume
   PROVIDES_MODULES  _aperture_parts
   ENABLE_TESTS      OFF)
 vtk_module_scan(

@@ -4,7 +4,7 @@ to closing brace).
 
 Usage: CheckFunctionLength.py SOURCE_DIR [--limit N] [--list N]
 
-Reads the .cxx and .h files of the library folders (Core, IO, Rendering), the tools
+Reads the .cxx and .h files of the library folders (Core, IO, Rendering, Volume), the tools
 (Examples/ApertureRender), the fuzz targets and the ParaView plugin, with
 comments and literals blanked, and measures every function body that is not inside another
 function: free functions, methods defined out of line and those defined in class bodies.
@@ -18,7 +18,7 @@ import pathlib
 import re
 import sys
 
-FOLDERS = ("Core", "IO", "Rendering", "Examples/ApertureRender", "Testing/Fuzz",
+FOLDERS = ("Core", "IO", "Rendering", "Volume", "Examples/ApertureRender", "Testing/Fuzz",
            "ParaView")
 REASON = "Longer than 80 lines:"
 CONTROL = re.compile(r"\b(if|for|while|switch|catch|do|else|try)\s*(\(|$)")

@@ -1,0 +1,83 @@
+// ApertureLighting: computeLighting() of VTK's GPU volume ray caster, shaded by each sample's
+// aperture, for vtkApertureVolumeMapper. It takes the place of VTK's lighting declaration, after
+// vtkSphericalCap::GetGLSLConstants() and vtkSphericalCapGLSL, with APERTURE_SHADING (the
+// vtkSphericalCap model: EXACT or SMOOTHSTEP) and, where the volume property has a gradient
+// opacity, APERTURE_GRADIENT_OPACITY defined.
+//
+// A sample inside a medium has no surface to turn toward a light: it gets the part of each
+// light's cap that its aperture holds (the light's visible share, 1 in free space, as
+// vtkVolumeApertureReference's irradiance is), and of a uniform sky the aperture's share of the
+// whole sphere.
+
+// The uniforms come from vtkApertureVolumeMapper as the shader property's custom uniforms,
+// declared ahead of this code: the apertures (apertureVolume, RGBA8: the bent normal as
+// (n + 1)/2, the radius as r/pi), read at the volume's texture coordinates times
+// apertureTextureScale plus apertureTextureShift (the aperture grid may be coarser, of
+// apertureGridSize voxels); up to 8
+// lights (apertureLightCount): toward each in the volume's data axes (apertureLightAxis), its cap
+// (apertureLightCap: radius, and the sine and cosine of half of it) and its colour times
+// intensity times the property's diffuse (apertureLightColor); the sky's colour times the
+// property's ambient (apertureSkyColor).
+
+// The share of a light's cap that falls within the aperture. Most samples see a light whole or
+// not at all: those are told from the half chord between the axes, without an angle.
+float apertureLightShare(sphericalCapCap aperture, sphericalCapCap light)
+{
+  float hc = 0.5 * length(aperture.axis - light.axis);
+  float hp = aperture.halfSin;
+  float cp = aperture.halfCos;
+  float hl = light.halfSin;
+  float cl = light.halfCos;
+  if (aperture.radius + light.radius < sphericalCapPi && hc >= hp * cl + cp * hl)
+  {
+    return 0.0; // d >= rp + rl
+  }
+  if (light.radius <= aperture.radius && hc <= hp * cl - cp * hl)
+  {
+    return 1.0; // d <= rp - rl
+  }
+  float hs = 0.5 * length(aperture.axis + light.axis);
+  float d = 2.0 * sphericalCapAtan2(hc, hs);
+  float areaL = 4.0 * sphericalCapPi * hl * hl;
+  if (APERTURE_SHADING == sphericalCapSmoothstep)
+  {
+    return sphericalCapIntersectionAreaSmoothstep(aperture.radius, light.radius, d) / areaL;
+  }
+  vec3 moment;
+  int lensCase = sphericalCapLensCase(aperture.radius, light.radius, d);
+  return sphericalCapLens(lensCase, aperture, light, hc, hs, moment) / areaL;
+}
+
+vec4 computeLighting(vec4 color, int component, float label)
+{
+  // Half an aperture voxel toward the eye: the surface layer of opaque matter takes the light of its
+  // outside, as the eye sees it, instead of banding with the depth a ray stops at in the layer.
+  vec3 toEye = -g_dirStep * apertureTextureScale * apertureGridSize;
+  float toEyeLength = length(toEye);
+  vec3 at = g_dataPos * apertureTextureScale + apertureTextureShift;
+  if (toEyeLength > 0.0)
+  {
+    at += 0.5 * toEye / (toEyeLength * apertureGridSize);
+  }
+  vec4 stored = texture(apertureVolume, at);
+  vec3 bent = stored.xyz * 2.0 - 1.0;
+  float length = length(bent);
+  sphericalCapCap aperture = sphericalCapMakeCap(
+    length > 1e-3 ? bent / length : vec3(0.0, 0.0, 1.0), stored.w * sphericalCapPi);
+  vec3 light = apertureSkyColor * (aperture.halfSin * aperture.halfSin);
+  for (int i = 0; i < apertureLightCount; ++i)
+  {
+    vec3 cap = apertureLightCap[i];
+    light += apertureLightColor[i] *
+      apertureLightShare(aperture, sphericalCapCap(apertureLightAxis[i], cap.x, cap.y, cap.z));
+  }
+  vec4 finalColor = vec4(color.rgb * light, color.a);
+#ifdef APERTURE_GRADIENT_OPACITY
+  vec4 gradient = computeGradient(g_dataPos, component, in_volume[0], 0);
+  if (gradient.w >= 0.0 && label == 0.0)
+  {
+    finalColor.a *= computeGradientOpacity(gradient);
+  }
+#endif
+  return finalColor;
+}

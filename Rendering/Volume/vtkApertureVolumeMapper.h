@@ -1,0 +1,160 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    vtkApertureVolumeMapper.h
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+/**
+ * @class   vtkApertureVolumeMapper
+ * @brief   VTK's GPU volume ray caster, each sample lit through its aperture: soft shadows
+ *
+ * vtkOpenGLGPUVolumeRayCastMapper with the gradient Phong term replaced, where the volume
+ * property's Shade is on, by aperture lighting: each sample reads its aperture (bent normal and
+ * radius, trilinear from a 3D texture of 4 bytes a voxel) and gets
+ *
+ *   colour × (ambient × sky × A/4π + diffuse × Σ light × |aperture ∩ light cap| / |light cap|),
+ *
+ * A the aperture's solid angle: the share of each light's cap that the aperture holds (its
+ * intersection exact or by the paper's smoothstep, the GLSL twin of vtkSphericalCap), 1 in free
+ * space. A medium has no surface to turn toward a light, so there is no Lambert or specular term;
+ * vtkVolumeApertureReference's Monte-Carlo irradiance is what this estimates. Every switched-on
+ * light of the renderer (up to 8) is an area light of angular radius LightRadius toward it (a
+ * positional light from its direction to the volume's centre); the sky is uniform, of SkyColor.
+ *
+ * Everything else is VTK's: transfer functions, composite blending, cropping, clipping planes,
+ * masks, the interactive sample-distance reduction, the volume's transform. Apertures come from
+ * SetApertureData() (the output of a vtkVolumeAperturePrecompute on this mapper's input), or,
+ * when none is set, from the mapper's own precompute (GetAperturePrecompute() for its settings),
+ * rerun when the input or the volume property changes: drag the opacity curve and the shadows
+ * follow (at 128³ apertures, about 2 s on two cores).
+ *
+ * Where aperture lighting cannot apply (Shade off, a blend mode other than composite, more than
+ * one component, a 2D transfer function, several inputs, apertures that do not fit) the mapper
+ * draws as VTK does, with one warning for the cases that are not VTK's own choices.
+ *
+ * The volume draws with a shader property of the mapper's: a copy of the volume's own (its code
+ * and replacements; its custom uniforms are not carried over) with this mapper's replacement of
+ * VTK's lighting declaration and custom uniforms named aperture*. The volume's own property is
+ * left as it was, so another mapper on the same volume draws as it would.
+ *
+ * @sa vtkVolumeAperturePrecompute vtkVolumeApertureReference vtkSphericalCap
+ */
+
+#ifndef vtkApertureVolumeMapper_h
+#define vtkApertureVolumeMapper_h
+
+#include "vtkApertureLightingRenderingVolumeModule.h" // For export macro
+#include "vtkOpenGLGPUVolumeRayCastMapper.h"
+#include "vtkSmartPointer.h" // For members
+
+#include <string> // For the warning key
+
+class vtkImageData;
+class vtkOpenGLShaderProperty;
+class vtkTextureObject;
+class vtkVolumeAperturePrecompute;
+
+class VTKAPERTURELIGHTINGRENDERINGVOLUME_EXPORT vtkApertureVolumeMapper
+  : public vtkOpenGLGPUVolumeRayCastMapper
+{
+public:
+  static vtkApertureVolumeMapper* New();
+  vtkTypeMacro(vtkApertureVolumeMapper, vtkOpenGLGPUVolumeRayCastMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum ShadingModes
+  {
+    EXACT = 0,     ///< the exact intersection of the aperture and the light cap
+    SMOOTHSTEP = 1 ///< the paper's smoothstep approximation of it
+  };
+
+  ///@{
+  /**
+   * How a light's cap meets the aperture. Default EXACT.
+   */
+  vtkSetClampMacro(ShadingMode, int, EXACT, SMOOTHSTEP);
+  vtkGetMacro(ShadingMode, int);
+  void SetShadingModeToExact() { this->SetShadingMode(EXACT); }
+  void SetShadingModeToSmoothstep() { this->SetShadingMode(SMOOTHSTEP); }
+  ///@}
+
+  ///@{
+  /**
+   * The angular radius of every light, radians (clamped as vtkSphericalCap clamps light radii).
+   * Default 0.1: a soft sun.
+   */
+  vtkSetClampMacro(LightRadius, double, 1e-4, 1.5707963267948966);
+  vtkGetMacro(LightRadius, double);
+  ///@}
+
+  ///@{
+  /**
+   * The uniform sky, times the volume property's ambient. Default white.
+   */
+  vtkSetVector3Macro(SkyColor, double);
+  vtkGetVector3Macro(SkyColor, double);
+  ///@}
+
+  ///@{
+  /**
+   * Apertures computed elsewhere, on this mapper's input (its grid or a coarser one over the same
+   * bounds, every n-th voxel), with point arrays BentNormal and ApertureRadius. nullptr (the
+   * default): the mapper computes them.
+   */
+  void SetApertureData(vtkImageData* apertures);
+  vtkGetObjectMacro(ApertureData, vtkImageData);
+  ///@}
+
+  /**
+   * The precompute the mapper runs when no aperture data is set: its MaximumDistance,
+   * NumberOfDirections and ApertureGridStep are the mapper's.
+   */
+  vtkVolumeAperturePrecompute* GetAperturePrecompute();
+
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+protected:
+  vtkApertureVolumeMapper();
+  ~vtkApertureVolumeMapper() override;
+
+  void GPURender(vtkRenderer* ren, vtkVolume* vol) override;
+
+  int ShadingMode = EXACT;
+  double LightRadius = 0.1;
+  double SkyColor[3] = { 1.0, 1.0, 1.0 };
+  vtkImageData* ApertureData = nullptr;
+
+private:
+  vtkApertureVolumeMapper(const vtkApertureVolumeMapper&) = delete;
+  void operator=(const vtkApertureVolumeMapper&) = delete;
+
+  // Why aperture lighting does not apply to this volume ("" when it does, "-" for VTK's own
+  // choices: no shading, another blend mode).
+  std::string Unusable(vtkVolume* vol);
+  // The apertures to draw with, computed when needed; nullptr with a warning when unusable.
+  vtkImageData* CurrentApertures(vtkVolume* vol);
+  bool UploadApertures(vtkRenderer* ren, vtkImageData* apertures);
+  // The shader property the volume draws with: its own code and replacements and this mapper's.
+  vtkOpenGLShaderProperty* ShaderPropertyFor(vtkVolume* vol);
+  void SetLightUniforms(vtkRenderer* ren, vtkVolume* vol);
+  void WarnOnce(const std::string& problem);
+
+  vtkSmartPointer<vtkVolumeAperturePrecompute> Precompute;
+  vtkSmartPointer<vtkTextureObject> Texture;
+  vtkImageData* UploadedApertures = nullptr; // identity only, never dereferenced
+  vtkMTimeType UploadedTime = 0;
+  vtkMTimeType PrecomputeTried = 0;
+  float TextureScale[3] = { 1.0f, 1.0f, 1.0f };
+  float TextureShift[3] = { 0.0f, 0.0f, 0.0f };
+  float GridSize[3] = { 1.0f, 1.0f, 1.0f };
+  vtkSmartPointer<vtkOpenGLShaderProperty> Shaders;
+  vtkMTimeType CopiedTime = 0;
+  std::string InstalledCode;
+  std::string LastWarning;
+};
+
+#endif

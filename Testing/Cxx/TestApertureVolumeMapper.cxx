@@ -1,0 +1,336 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    TestApertureVolumeMapper.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+// vtkApertureVolumeMapper in a real OpenGL context:
+//  1. the GLSL twin: an opaque volume whose apertures are all the same, so that each pixel is one
+//     sample's shading, against vtkSphericalCap's intersection areas (exact and smoothstep, one
+//     and two lights, apertures from nearly closed to the whole sphere);
+//  2. with its own precompute: an open shell's inner wall is lit through the opening and not
+//     from behind, a transfer-function change recomputes the apertures, Shade off draws as VTK;
+//  3. what it cannot shade (two components, apertures that do not fit) warns and draws as VTK.
+
+#include "vtkApertureVolumeMapper.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkOpenGLGPUVolumeRayCastMapper.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSphericalCap.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkVolume.h"
+#include "vtkVolumeAperturePrecompute.h"
+#include "vtkVolumeProperty.h"
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+vtkSmartPointer<vtkImageData> MakeVolume(
+  int n, int components, const std::function<double(double, double, double)>& f)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(n, n, n);
+  image->SetSpacing(1.0 / (n - 1), 1.0 / (n - 1), 1.0 / (n - 1));
+  image->AllocateScalars(VTK_FLOAT, components);
+  auto* scalars = vtkFloatArray::SafeDownCast(image->GetPointData()->GetScalars());
+  for (int k = 0; k < n; ++k)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        for (int c = 0; c < components; ++c)
+        {
+          scalars->SetTypedComponent(i + n * (j + vtkIdType(n) * k), c,
+            static_cast<float>(f(i / (n - 1.0), j / (n - 1.0), k / (n - 1.0))));
+        }
+      }
+    }
+  }
+  return image;
+}
+
+vtkSmartPointer<vtkVolumeProperty> WhiteProperty(double unitDistance)
+{
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0.0, 0.0);
+  opacity->AddPoint(1.0, 1.0);
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(0.0, 1.0, 1.0, 1.0);
+  color->AddRGBPoint(1.0, 1.0, 1.0, 1.0);
+  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
+  property->SetScalarOpacity(opacity);
+  property->SetColor(color);
+  property->SetScalarOpacityUnitDistance(unitDistance);
+  property->SetInterpolationTypeToLinear();
+  property->ShadeOn();
+  property->SetAmbient(0.3);
+  property->SetDiffuse(0.6);
+  return property;
+}
+
+// A scene: a window of 64 x 64 looking down -z at the unit cube.
+struct Scene
+{
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkVolume> Volume;
+  Scene(vtkVolumeMapper* mapper, vtkVolumeProperty* property)
+  {
+    this->Window->SetSize(64, 64);
+    this->Window->SetMultiSamples(0);
+    this->Window->AddRenderer(this->Renderer);
+    this->Renderer->AutomaticLightCreationOff();
+    this->Volume->SetMapper(mapper);
+    this->Volume->SetProperty(property);
+    this->Renderer->AddVolume(this->Volume);
+    this->Renderer->GetActiveCamera()->SetPosition(0.5, 0.5, 4.0);
+    this->Renderer->GetActiveCamera()->SetFocalPoint(0.5, 0.5, 0.5);
+    this->Renderer->GetActiveCamera()->SetViewUp(0.0, 1.0, 0.0);
+    this->Renderer->ResetCameraClippingRange();
+  }
+  // The centre pixel's red channel in [0, 1], and the mean red over the image.
+  double Pixel(int x = 32, int y = 32)
+  {
+    this->Window->Render();
+    vtkNew<vtkUnsignedCharArray> rgb;
+    this->Window->GetPixelData(x, y, x, y, 0, rgb);
+    return rgb->GetValue(0) / 255.0;
+  }
+  void AddLight(const double toward[3], double intensity)
+  {
+    vtkNew<vtkLight> light;
+    light->SetLightTypeToSceneLight();
+    light->SetPositional(false);
+    light->SetFocalPoint(0.0, 0.0, 0.0);
+    light->SetPosition(toward);
+    light->SetIntensity(intensity);
+    this->Renderer->AddLight(light);
+  }
+};
+
+bool Report(bool ok, const char* what, double value, double limit)
+{
+  std::printf("%-64s %9.4f (limit %g) %s\n", what, value, limit, ok ? "ok" : "FAILED");
+  return ok;
+}
+
+// 1. Pixels against the C++ formula, apertures constant over the volume.
+bool TestTwin()
+{
+  auto volume = MakeVolume(8, 1, [](double, double, double) { return 1.0; });
+  auto property = WhiteProperty(1e-4);
+  bool ok = true;
+  double worst = 0.0;
+  vtkMath::RandomSeed(3);
+  // One window for every case: X servers take a while to let windows go.
+  vtkNew<vtkApertureVolumeMapper> first;
+  Scene scene(first, property);
+  for (int mode : { vtkApertureVolumeMapper::EXACT, vtkApertureVolumeMapper::SMOOTHSTEP })
+  {
+    for (int c = 0; c < 12; ++c)
+    {
+      double bent[3] = { vtkMath::Gaussian(), vtkMath::Gaussian(), vtkMath::Gaussian() };
+      vtkMath::Normalize(bent);
+      // The radius as the texture holds it: a byte of r/pi.
+      const double radius = std::round(vtkMath::Random(0.05, 1.0) * 255.0) / 255.0 * Pi;
+      double quantized[3];
+      for (int a = 0; a < 3; ++a)
+      {
+        quantized[a] = std::round(0.5 * (bent[a] + 1.0) * 255.0) / 255.0 * 2.0 - 1.0;
+      }
+      vtkMath::Normalize(quantized);
+      auto apertures = vtkSmartPointer<vtkImageData>::New();
+      apertures->CopyStructure(volume);
+      vtkNew<vtkFloatArray> bentArray;
+      bentArray->SetName("BentNormal");
+      bentArray->SetNumberOfComponents(3);
+      bentArray->SetNumberOfTuples(volume->GetNumberOfPoints());
+      vtkNew<vtkFloatArray> radiusArray;
+      radiusArray->SetName("ApertureRadius");
+      radiusArray->SetNumberOfTuples(volume->GetNumberOfPoints());
+      for (vtkIdType i = 0; i < volume->GetNumberOfPoints(); ++i)
+      {
+        bentArray->SetTuple(i, bent);
+        radiusArray->SetValue(i, static_cast<float>(radius));
+      }
+      apertures->GetPointData()->AddArray(bentArray);
+      apertures->GetPointData()->AddArray(radiusArray);
+
+      vtkNew<vtkApertureVolumeMapper> mapper;
+      mapper->SetInputData(volume);
+      mapper->SetApertureData(apertures);
+      mapper->SetShadingMode(mode);
+      const double lightRadius = c % 3 == 0 ? 0.05 : 0.4;
+      mapper->SetLightRadius(lightRadius);
+      scene.Volume->SetMapper(mapper);
+      scene.Renderer->RemoveAllLights();
+      const int lightCount = c % 2 == 0 ? 1 : 2;
+      double expected = 0.3 * std::pow(std::sin(0.5 * radius), 2);
+      for (int l = 0; l < lightCount; ++l)
+      {
+        double toward[3] = { vtkMath::Gaussian(), vtkMath::Gaussian(), vtkMath::Gaussian() };
+        vtkMath::Normalize(toward);
+        scene.AddLight(toward, 0.5);
+        const double d = std::acos(std::max(-1.0, std::min(1.0, vtkMath::Dot(quantized, toward))));
+        const double area = mode == vtkApertureVolumeMapper::EXACT
+          ? vtkSphericalCap::IntersectionArea(radius, lightRadius, d)
+          : vtkSphericalCap::IntersectionAreaSmoothstep(radius, lightRadius, d);
+        expected += 0.6 * 0.5 * area / vtkSphericalCap::SolidAngleFromCapRadius(lightRadius);
+      }
+      const double pixel = scene.Pixel();
+      worst = std::max(worst, std::abs(pixel - std::min(1.0, expected)));
+    }
+  }
+  ok &= Report(worst <= 3.0 / 255.0, "twin: largest |pixel - vtkSphericalCap| over 24 cases", worst,
+    3.0 / 255.0);
+  return ok;
+}
+
+// An opaque shell open toward -y, where the camera is.
+double OpenShell(double x, double y, double z)
+{
+  const double d[3] = { x - 0.5, y - 0.5, z - 0.5 };
+  const double rho = vtkMath::Norm(d);
+  const bool open = rho > 0.0 && -d[1] / rho > std::cos(0.6);
+  return rho > 0.3 && rho < 0.4 && !open ? 1.0 : 0.0;
+}
+
+// 2. Light through the opening against light from behind, a transfer-function change, and Shade
+// off as VTK draws it.
+bool TestShell()
+{
+  bool ok = true;
+  auto volume = MakeVolume(40, 1, OpenShell);
+  auto property = WhiteProperty(0.02);
+  vtkNew<vtkApertureVolumeMapper> mapper;
+  mapper->SetInputData(volume);
+  mapper->AutoAdjustSampleDistancesOff();
+  mapper->SetSampleDistance(0.01);
+  mapper->GetAperturePrecompute()->SetMaximumDistance(1.0);
+  Scene scene(mapper, property);
+  vtkCamera* camera = scene.Renderer->GetActiveCamera();
+  camera->SetPosition(0.5, -3.0, 0.5);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  scene.Renderer->ResetCamera();
+  // The inner wall opposite the opening, lit through it and from behind the shell.
+  const double front[3] = { 0.0, -1.0, 0.2 };
+  const double back[3] = { 0.0, 1.0, 0.2 };
+  scene.AddLight(front, 1.0);
+  const double through = scene.Pixel();
+  scene.Renderer->RemoveAllLights();
+  scene.AddLight(back, 1.0);
+  const double behind = scene.Pixel();
+  std::printf("inner wall: %.3f lit through the opening, %.3f from behind\n", through, behind);
+  ok &= Report(behind < 0.5 * through, "inner wall lit from behind over through the opening",
+    behind / through, 0.5);
+
+  // A transfer-function change recomputes the apertures.
+  const vtkMTimeType time = mapper->GetAperturePrecompute()->GetOutput()->GetMTime();
+  property->GetScalarOpacity()->AddPoint(0.5, 0.2);
+  scene.Pixel();
+  ok &= Report(mapper->GetAperturePrecompute()->GetOutput()->GetMTime() > time,
+    "a transfer-function change recomputes the apertures", 1.0, 1.0);
+
+  // Shade off draws VTK's picture, and VTK's mapper on the volume this mapper drew draws as on a
+  // volume of its own: nothing of this mapper's stays in the volume's shader property.
+  vtkNew<vtkOpenGLGPUVolumeRayCastMapper> plain;
+  plain->SetInputData(volume);
+  plain->AutoAdjustSampleDistancesOff();
+  plain->SetSampleDistance(0.01);
+  vtkNew<vtkVolume> other;
+  other->SetProperty(property);
+  auto picture = [&](vtkVolume* shown, vtkVolumeMapper* drawer)
+  {
+    scene.Renderer->RemoveAllViewProps();
+    shown->SetMapper(drawer);
+    scene.Renderer->AddVolume(shown);
+    scene.Window->Render();
+    auto rgb = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    scene.Window->GetPixelData(0, 0, 63, 63, 0, rgb);
+    return rgb;
+  };
+  auto differing = [](vtkUnsignedCharArray* a, vtkUnsignedCharArray* b)
+  {
+    int count = 0;
+    for (vtkIdType i = 0; i < a->GetNumberOfValues(); ++i)
+    {
+      count += std::abs(a->GetValue(i) - b->GetValue(i)) > 1;
+    }
+    return count;
+  };
+  auto vtkOnSame = picture(scene.Volume, plain);
+  auto vtkOnOther = picture(other, plain);
+  ok &= Report(differing(vtkOnSame, vtkOnOther) == 0,
+    "VTK's mapper after this one on the same volume: values that differ",
+    differing(vtkOnSame, vtkOnOther), 0);
+  property->ShadeOff();
+  auto ours = picture(scene.Volume, mapper);
+  auto vtks = picture(other, plain);
+  ok &= Report(differing(ours, vtks) == 0, "Shade off: values that differ from VTK's mapper",
+    differing(ours, vtks), 0);
+  return ok;
+}
+
+// 3. What the mapper cannot shade.
+bool TestUnusable()
+{
+  bool ok = true;
+  int warnings = 0;
+  vtkNew<vtkCallbackCommand> count;
+  count->SetClientData(&warnings);
+  count->SetCallback(
+    [](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
+  auto rgb = MakeVolume(8, 2, [](double x, double, double) { return x; });
+  auto property = WhiteProperty(0.1);
+  property->IndependentComponentsOff();
+  vtkNew<vtkApertureVolumeMapper> mapper;
+  mapper->AddObserver(vtkCommand::WarningEvent, count);
+  mapper->SetInputData(rgb);
+  Scene scene(mapper, property);
+  scene.Pixel();
+  scene.Pixel();
+  ok &= Report(warnings == 1, "two components: warnings (one)", warnings, 1);
+
+  warnings = 0;
+  auto volume = MakeVolume(8, 1, [](double, double, double) { return 1.0; });
+  vtkNew<vtkImageData> wrong;
+  wrong->SetDimensions(5, 5, 5);
+  vtkNew<vtkApertureVolumeMapper> mismatched;
+  mismatched->AddObserver(vtkCommand::WarningEvent, count);
+  mismatched->SetInputData(volume);
+  mismatched->SetApertureData(wrong);
+  Scene other(mismatched, WhiteProperty(0.1));
+  other.Pixel();
+  other.Pixel();
+  ok &= Report(warnings == 1, "apertures that do not fit: warnings (one)", warnings, 1);
+  return ok;
+}
+}
+
+int TestApertureVolumeMapper(int, char*[])
+{
+  bool ok = TestTwin();
+  ok &= TestShell();
+  ok &= TestUnusable();
+  return ok ? 0 : 1;
+}
