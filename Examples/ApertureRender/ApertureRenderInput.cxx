@@ -9,6 +9,7 @@
 
 =========================================================================*/
 #include "ApertureRenderInput.h"
+#include "ApertureRenderVolume.h"
 
 #include "ApertureRenderFuji.h"
 #include "ApertureRenderMesh.h"
@@ -455,6 +456,31 @@ void Resample(Input& input, int maximum)
     " samples (--max-grid)");
 }
 
+// A volume, its isosurface with --iso, or a height field for a 2D .vti.
+bool LoadVolumeOrSurface(const std::string& name, const Options& options, MessageCapture& messages,
+  Input& input, std::string& error)
+{
+  if (!LoadVolume(name, messages, input, error))
+  {
+    return false;
+  }
+  if (input.Heights)
+  {
+    FillVoids(input);
+    return true;
+  }
+  if (std::isnan(options.Iso))
+  {
+    return true;
+  }
+  if (!ContourVolume(options, input, error))
+  {
+    return false;
+  }
+  ChooseMaximumEdge(options, input);
+  return true;
+}
+
 bool LoadInput(const Options& options, MessageCapture& messages, Input& input, std::string& error)
 {
   const std::string& name = options.Input;
@@ -495,6 +521,10 @@ bool LoadInput(const Options& options, MessageCapture& messages, Input& input, s
       error = vtkApertureText::QuoteName(name) + " is empty";
       return false;
     }
+    if (IsVolumeFile(name))
+    {
+      return LoadVolumeOrSurface(name, options, messages, input, error);
+    }
     const std::string extension =
       vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(name));
     static const std::vector<std::string> meshes = { ".obj", ".ply", ".stl", ".vtp", ".vtk" };
@@ -513,7 +543,8 @@ bool LoadInput(const Options& options, MessageCapture& messages, Input& input, s
     {
       error = vtkApertureText::QuoteName(name) + " has an unknown format" +
         (extension.empty() ? std::string() : " (" + extension + ")") +
-        "; known: .obj .ply .stl .vtp .vtk .png .tif .tiff .asc .img .vrt .dem .hgt";
+        "; known: .obj .ply .stl .vtp .vtk .png .tif .tiff .asc .img .vrt .dem .hgt, volumes "
+        ".vti .mha .mhd .nrrd .nhdr .nii .nii.gz";
       return false;
     }
     if (!LoadHeightField(name, extension, options, messages, input, error))

@@ -30,6 +30,8 @@ struct Input
   vtkSmartPointer<vtkPolyData> Mesh;
   // A height field: a 2D grid whose active scalars, a float array named Elevation, are heights.
   vtkSmartPointer<vtkImageData> Heights;
+  // A CT or MR volume, one scalar component (drawn by vtkApertureVolumeMapper).
+  vtkSmartPointer<vtkImageData> Volume;
   std::string Description;
   // The --env environment, a float RGB latitude-longitude image; null without --env.
   vtkSmartPointer<vtkImageData> Environment;

@@ -331,6 +331,23 @@ std::vector<OptionRule> FieldRules()
       "from the apertures of the whole grid (with --rays: the grid is resampled before the rays)",
       "is not a whole number from 2 to 16384",
       [](const std::string& v, Options& o) { return ToWhole(v, 2, 16384, o.MaximumGrid); } },
+    { "Volumes", { "--volume" }, "PRESET",
+      "how a CT or MR volume (.vti, .mha, .mhd, .nrrd, .nhdr, .nii, .nii.gz) is seen: ct-bone, "
+      "ct-skin (Hounsfield units), mr (from the scalar range), or an opacity ramp LOW:HIGH (0 at "
+      "LOW, opaque at HIGH); default ct-skin for data that holds air at -1000, else mr. Volumes "
+      "take --mode exact (default), smoothstep, standard (VTK's own shading) or all",
+      "is not ct-bone, ct-skin, mr or LOW:HIGH",
+      [](const std::string& v, Options& o)
+      {
+        double low = 0.0, high = 0.0;
+        o.VolumePreset = v;
+        return v == "ct-bone" || v == "ct-skin" || v == "mr" ||
+          (std::sscanf(v.c_str(), "%lf:%lf", &low, &high) == 2 && high > low);
+      } },
+    { "Volumes", { "--iso" }, "VALUE",
+      "draw the volume's isosurface at VALUE as a mesh instead (apertures by rays, every mesh "
+      "mode)",
+      "is not a number", [](const std::string& v, Options& o) { return ToNumber(v, o.Iso); } },
     { "", { "-h", "--help" }, "", "this text", "",
       [](const std::string&, Options& o)
       {

@@ -106,6 +106,7 @@ Options::Options()
   , CameraAzimuth(std::numeric_limits<double>::quiet_NaN())
   , CameraElevation(std::numeric_limits<double>::quiet_NaN())
   , EnvironmentExposure(std::numeric_limits<double>::quiet_NaN())
+  , Iso(std::numeric_limits<double>::quiet_NaN())
 {
 }
 

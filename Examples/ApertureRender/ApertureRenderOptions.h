@@ -70,6 +70,9 @@ struct Options
   double Spacing = 0.0;
   double HeightScale = 0.0;
   int MaximumGrid = 1024; // larger grids: a mesh of at most this many samples a side
+  // Volumes: an opacity preset (ct-bone, ct-skin, mr) or ramp LOW:HIGH; empty: by the data.
+  std::string VolumePreset;
+  double Iso; // volumes: the isosurface at this value through the mesh pipeline; NaN: none
   double Background[3] = { 0.09, 0.1, 0.12 };
   bool Help = false;
   bool Version = false;

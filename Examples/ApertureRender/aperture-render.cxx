@@ -19,6 +19,7 @@
 #include "ApertureRenderMessages.h"
 #include "ApertureRenderOptions.h"
 #include "ApertureRenderView.h"
+#include "ApertureRenderVolume.h"
 
 #include "vtkAperturePrecompute.h"
 #include "vtkApertureText.h"
@@ -132,6 +133,13 @@ int ReadInput(const ApertureRender::Options& options, ApertureRender::MessageCap
     !ApertureRender::LoadEnvironment(options, messages, input, error))
   {
     return Fail(error, 1);
+  }
+  if (input.Volume)
+  {
+    Say(input.Description);
+    return options.Cache.empty() && options.SaveData.empty()
+      ? -1
+      : Fail("--cache and --save-data are for meshes and height fields, not volumes", 2);
   }
   const bool field = input.Heights != nullptr;
   if (field)
@@ -299,6 +307,10 @@ int main(int argc, char* argv[])
   if (code >= 0)
   {
     return code;
+  }
+  if (input.Volume)
+  {
+    return ApertureRender::ShowVolume(options, input, messages);
   }
   std::string error;
   vtkSmartPointer<vtkDataObject> apertures = Apertures(options, input, messages, error);

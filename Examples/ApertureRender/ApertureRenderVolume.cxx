@@ -1,0 +1,420 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    ApertureRenderVolume.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "ApertureRenderVolume.h"
+
+#include "ApertureRenderDisplay.h"
+#include "ApertureRenderInput.h"
+#include "ApertureRenderMessages.h"
+#include "ApertureRenderOptions.h"
+
+#include "vtkApertureText.h"
+#include "vtkApertureVolumeMapper.h"
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkFlyingEdges3D.h"
+#include "vtkImageAppend.h"
+#include "vtkImageData.h"
+#include "vtkImageReader2.h"
+#include "vtkInteractorStyleTrackballCamera.h"
+#include "vtkLight.h"
+#include "vtkMath.h"
+#include "vtkMetaImageReader.h"
+#include "vtkNIFTIImageReader.h"
+#include "vtkNew.h"
+#include "vtkNrrdReader.h"
+#include "vtkOpenGLGPUVolumeRayCastMapper.h"
+#include "vtkPNGWriter.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderWindowInteractor.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+#include "vtkWindowToImageFilter.h"
+#include "vtkXMLImageDataReader.h"
+
+#include <vtksys/SystemTools.hxx>
+
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+namespace ApertureRender
+{
+namespace
+{
+bool EndsWith(const std::string& text, const std::string& end)
+{
+  return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
+}
+
+std::string Lower(const std::string& name)
+{
+  return vtksys::SystemTools::LowerCase(name);
+}
+
+// The reader for a volume file, by extension.
+vtkSmartPointer<vtkAlgorithm> VolumeReader(const std::string& name)
+{
+  const std::string lower = Lower(name);
+  if (EndsWith(lower, ".vti"))
+  {
+    auto reader = vtkSmartPointer<vtkXMLImageDataReader>::New();
+    reader->SetFileName(name.c_str());
+    return reader;
+  }
+  vtkSmartPointer<vtkImageReader2> reader;
+  if (EndsWith(lower, ".nii") || EndsWith(lower, ".nii.gz"))
+  {
+    reader = vtkSmartPointer<vtkNIFTIImageReader>::New();
+  }
+  else if (EndsWith(lower, ".nrrd") || EndsWith(lower, ".nhdr"))
+  {
+    reader = vtkSmartPointer<vtkNrrdReader>::New();
+  }
+  else
+  {
+    reader = vtkSmartPointer<vtkMetaImageReader>::New();
+  }
+  reader->SetFileName(name.c_str());
+  return reader;
+}
+
+// Adds the opacity and colour of a preset over scalars of `range` to `property`; false for an
+// unknown preset.
+bool ApplyPreset(const std::string& preset, const double range[2], vtkVolumeProperty* property)
+{
+  vtkNew<vtkPiecewiseFunction> opacity;
+  vtkNew<vtkColorTransferFunction> color;
+  double low = 0.0, high = 0.0;
+  if (preset == "ct-bone")
+  {
+    opacity->AddPoint(150.0, 0.0);
+    opacity->AddPoint(400.0, 0.6);
+    opacity->AddPoint(1500.0, 0.9);
+    color->AddRGBPoint(150.0, 0.75, 0.55, 0.4);
+    color->AddRGBPoint(400.0, 0.95, 0.88, 0.75);
+    color->AddRGBPoint(1500.0, 1.0, 1.0, 0.95);
+  }
+  else if (preset == "ct-skin")
+  {
+    opacity->AddPoint(-600.0, 0.0);
+    opacity->AddPoint(-300.0, 0.8);
+    opacity->AddPoint(300.0, 0.8);
+    color->AddRGBPoint(-600.0, 0.85, 0.6, 0.5);
+    color->AddRGBPoint(300.0, 0.95, 0.78, 0.68);
+  }
+  else if (preset == "mr")
+  {
+    const double span = range[1] - range[0];
+    opacity->AddPoint(range[0] + 0.12 * span, 0.0);
+    opacity->AddPoint(range[0] + 0.3 * span, 0.5);
+    opacity->AddPoint(range[1], 0.8);
+    color->AddRGBPoint(range[0], 0.7, 0.66, 0.62);
+    color->AddRGBPoint(range[1], 1.0, 0.97, 0.94);
+  }
+  else if (std::sscanf(preset.c_str(), "%lf:%lf", &low, &high) == 2 && std::isfinite(low) &&
+    std::isfinite(high) && high > low)
+  {
+    opacity->AddPoint(low, 0.0);
+    opacity->AddPoint(high, 1.0);
+    color->AddRGBPoint(low, 0.85, 0.8, 0.75);
+    color->AddRGBPoint(high, 1.0, 1.0, 1.0);
+  }
+  else
+  {
+    return false;
+  }
+  property->SetScalarOpacity(opacity);
+  property->SetColor(color);
+  return true;
+}
+
+// The preset when none is given: CT holds air (Hounsfield units down to -1000), MR does not.
+std::string DefaultPreset(const double range[2])
+{
+  return range[0] < -500.0 ? "ct-skin" : "mr";
+}
+
+// A unit vector toward compass azimuth `az` (0 north = +y, 90 east = +x) and elevation `el`.
+void Toward(double az, double el, double v[3])
+{
+  const double a = vtkMath::RadiansFromDegrees(az);
+  const double e = vtkMath::RadiansFromDegrees(el);
+  v[0] = std::cos(e) * std::sin(a);
+  v[1] = std::cos(e) * std::cos(a);
+  v[2] = std::sin(e);
+}
+
+// One picture: the volume drawn by `mapper` in `window`.
+vtkSmartPointer<vtkImageData> Grab(vtkRenderWindow* window)
+{
+  window->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->Update();
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->DeepCopy(grab->GetOutput());
+  return image;
+}
+
+// The scene: renderer, lights, camera, for volume `input` of property `property`.
+void SetUpScene(const Options& options, vtkImageData* volume, vtkRenderer* renderer)
+{
+  renderer->SetBackground(options.Background);
+  renderer->AutomaticLightCreationOff();
+  const double eyeAzimuth = std::isnan(options.CameraAzimuth) ? 180.0 : options.CameraAzimuth;
+  const double eyeElevation = std::isnan(options.CameraElevation) ? 15.0 : options.CameraElevation;
+  std::vector<Sun> suns = options.Suns;
+  if (suns.empty() && !options.NoSun)
+  {
+    suns.push_back({ eyeAzimuth - 45.0, eyeElevation + 30.0, 6.0 });
+  }
+  for (const Sun& sun : suns)
+  {
+    double toward[3];
+    Toward(sun.Azimuth, sun.Elevation, toward);
+    vtkNew<vtkLight> light;
+    light->SetLightTypeToSceneLight();
+    light->SetPositional(false);
+    light->SetFocalPoint(0.0, 0.0, 0.0);
+    light->SetPosition(toward);
+    renderer->AddLight(light);
+  }
+  double bounds[6], center[3], eye[3];
+  volume->GetBounds(bounds);
+  volume->GetCenter(center);
+  Toward(eyeAzimuth, eyeElevation, eye);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(center);
+  camera->SetPosition(center[0] + eye[0], center[1] + eye[1], center[2] + eye[2]);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  renderer->ResetCamera(bounds);
+  camera->Zoom(options.Zoom);
+}
+
+// The volume property: the preset, the lighting that suits aperture shading (a bright sky,
+// as the shadows are what shows the shape).
+vtkSmartPointer<vtkVolumeProperty> MakeProperty(
+  const Options& options, vtkImageData* volume, std::string& error)
+{
+  double range[2];
+  volume->GetPointData()->GetScalars()->GetRange(range);
+  const std::string preset =
+    options.VolumePreset.empty() ? DefaultPreset(range) : options.VolumePreset;
+  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
+  if (!ApplyPreset(preset, range, property))
+  {
+    error = "--volume " + vtkApertureText::Quote(preset) +
+      " is not ct-bone, ct-skin, mr or an opacity ramp LOW:HIGH";
+    return nullptr;
+  }
+  const double* spacing = volume->GetSpacing();
+  property->SetScalarOpacityUnitDistance(std::min({ spacing[0], spacing[1], spacing[2] }));
+  property->SetInterpolationTypeToLinear();
+  property->ShadeOn();
+  property->SetAmbient(1.0);
+  property->SetDiffuse(0.8);
+  property->SetSpecular(0.2);
+  return property;
+}
+
+vtkSmartPointer<vtkVolumeMapper> MakeMapper(
+  const std::string& mode, const Options& options, vtkImageData* volume)
+{
+  vtkSmartPointer<vtkOpenGLGPUVolumeRayCastMapper> mapper;
+  if (mode == "standard")
+  {
+    mapper = vtkSmartPointer<vtkOpenGLGPUVolumeRayCastMapper>::New();
+  }
+  else
+  {
+    auto apertures = vtkSmartPointer<vtkApertureVolumeMapper>::New();
+    apertures->SetShadingMode(
+      mode == "smoothstep" ? vtkApertureVolumeMapper::SMOOTHSTEP : vtkApertureVolumeMapper::EXACT);
+    apertures->SetLightRadius(vtkMath::RadiansFromDegrees(
+      options.Suns.empty() ? 6.0 : std::max(options.Suns[0].Radius, 0.01)));
+    apertures->SetSkyColor(options.Sky[0] * 2.0, options.Sky[1] * 2.0, options.Sky[2] * 2.0);
+    mapper = apertures;
+  }
+  mapper->SetInputData(volume);
+  mapper->LockSampleDistanceToInputSpacingOn();
+  mapper->SetAutoAdjustSampleDistances(options.Interactive);
+  return mapper;
+}
+}
+
+//------------------------------------------------------------------------------
+bool IsVolumeFile(const std::string& name)
+{
+  const std::string lower = Lower(name);
+  for (const char* end : { ".vti", ".mha", ".mhd", ".nrrd", ".nhdr", ".nii", ".nii.gz" })
+  {
+    if (EndsWith(lower, end))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+bool LoadVolume(const std::string& name, MessageCapture& messages, Input& input, std::string& error)
+{
+  vtkSmartPointer<vtkAlgorithm> reader = VolumeReader(name);
+  messages.Clear();
+  reader->Update();
+  auto* image = vtkImageData::SafeDownCast(reader->GetOutputDataObject(0));
+  vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
+  if (!messages.FirstError().empty() || !scalars)
+  {
+    error = vtkApertureText::QuoteName(name) + " cannot be read as a volume: " +
+      (messages.FirstError().empty() ? std::string("it holds no point scalars")
+                                     : messages.FirstError());
+    return false;
+  }
+  int dims[3];
+  image->GetDimensions(dims);
+  if (scalars->GetNumberOfComponents() != 1)
+  {
+    error = vtkApertureText::QuoteName(name) + " holds " +
+      std::to_string(scalars->GetNumberOfComponents()) +
+      "-component scalars; a volume needs one (a grey-level CT or MR)";
+    return false;
+  }
+  if (dims[2] == 1 && EndsWith(Lower(name), ".vti") && dims[0] > 1 && dims[1] > 1)
+  {
+    // Heights are a float array named Elevation, whatever the file held.
+    vtkNew<vtkFloatArray> heights;
+    heights->DeepCopy(scalars);
+    heights->SetName("Elevation");
+    input.Heights = vtkSmartPointer<vtkImageData>::New();
+    input.Heights->CopyStructure(image);
+    input.Heights->GetPointData()->SetScalars(heights);
+    input.Description = vtkApertureText::QuoteName(name) + ", a height field of " +
+      std::to_string(dims[0]) + " x " + std::to_string(dims[1]) + " samples";
+    return true;
+  }
+  if (dims[0] < 2 || dims[1] < 2 || dims[2] < 2)
+  {
+    error = vtkApertureText::QuoteName(name) + " is " + std::to_string(dims[0]) + " x " +
+      std::to_string(dims[1]) + " x " + std::to_string(dims[2]) +
+      " voxels; a volume needs at least 2 along each axis";
+    return false;
+  }
+  input.Volume = image;
+  const double* spacing = image->GetSpacing();
+  std::ostringstream description;
+  description << vtkApertureText::QuoteName(name) << ", a volume of " << dims[0] << " x " << dims[1]
+              << " x " << dims[2] << " voxels, " << spacing[0] << " x " << spacing[1] << " x "
+              << spacing[2] << " apart";
+  input.Description = description.str();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool ContourVolume(const Options& options, Input& input, std::string& error)
+{
+  vtkNew<vtkFlyingEdges3D> contour;
+  contour->SetInputData(input.Volume);
+  contour->SetValue(0, options.Iso);
+  contour->ComputeNormalsOff();
+  contour->Update();
+  if (contour->GetOutput()->GetNumberOfPolys() == 0)
+  {
+    double range[2];
+    input.Volume->GetPointData()->GetScalars()->GetRange(range);
+    std::ostringstream why;
+    why << "--iso " << options.Iso << " gives no surface (the scalars run from " << range[0]
+        << " to " << range[1] << ")";
+    error = why.str();
+    return false;
+  }
+  input.Mesh = contour->GetOutput();
+  input.Notes.push_back("--iso " + std::to_string(options.Iso) + ": an isosurface of " +
+    std::to_string(input.Mesh->GetNumberOfPolys()) + " triangles");
+  input.Volume = nullptr;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+int ShowVolume(const Options& options, const Input& input, MessageCapture& messages)
+{
+  if (options.Mode != "exact" && options.Mode != "smoothstep" && options.Mode != "standard" &&
+    options.Mode != "all")
+  {
+    std::cerr << "aperture-render: --mode " << options.Mode
+              << " is for surfaces; volumes take exact, smoothstep, standard or all\n";
+    return 2;
+  }
+  std::string error;
+  vtkSmartPointer<vtkVolumeProperty> property = MakeProperty(options, input.Volume, error);
+  void* display = property ? OpenDisplay(error) : nullptr;
+  if (!display)
+  {
+    std::cerr << "aperture-render: " << error << "\n";
+    return property ? 1 : 2;
+  }
+  vtkNew<vtkRenderWindow> window;
+  window->SetDisplayId(display);
+  window->SetSize(options.Width, options.Height);
+  window->SetOffScreenRendering(!options.Interactive);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  SetUpScene(options, input.Volume, renderer);
+  vtkNew<vtkVolume> volume;
+  volume->SetProperty(property);
+  renderer->AddVolume(volume);
+  std::vector<std::string> modes = { options.Mode };
+  if (options.Mode == "all")
+  {
+    modes = { "standard", "exact", "smoothstep" };
+  }
+  vtkNew<vtkImageAppend> row;
+  row->SetAppendAxis(0);
+  messages.Clear();
+  for (const std::string& mode : modes)
+  {
+    volume->SetMapper(MakeMapper(mode, options, input.Volume));
+    row->AddInputData(Grab(window));
+  }
+  int status = 0;
+  if (!messages.FirstError().empty())
+  {
+    std::cerr << "aperture-render: rendering failed: " << messages.FirstError() << "\n";
+    status = 1;
+  }
+  else if (!options.Output.empty())
+  {
+    vtkNew<vtkPNGWriter> writer;
+    writer->SetInputConnection(row->GetOutputPort());
+    writer->SetFileName(options.Output.c_str());
+    writer->Write();
+    std::cout << "wrote " << vtksys::SystemTools::CollapseFullPath(options.Output) << "\n";
+  }
+  if (status == 0 && options.Interactive)
+  {
+    vtkNew<vtkRenderWindowInteractor> interactor;
+    vtkNew<vtkInteractorStyleTrackballCamera> style;
+    interactor->SetInteractorStyle(style);
+    interactor->SetRenderWindow(window);
+    interactor->Start();
+  }
+  window->Finalize();
+  CloseDisplay(display);
+  return status;
+}
+}
