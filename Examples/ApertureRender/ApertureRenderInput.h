@@ -30,8 +30,10 @@ struct Input
   vtkSmartPointer<vtkPolyData> Mesh;
   // A height field: a 2D grid whose active scalars, a float array named Elevation, are heights.
   vtkSmartPointer<vtkImageData> Heights;
-  // A CT or MR volume, one scalar component (drawn by vtkApertureVolumeMapper).
+  // A CT or MR volume, one scalar component (drawn by vtkApertureVolumeMapper), and the compass
+  // azimuth its front (a patient's face) is seen from.
   vtkSmartPointer<vtkImageData> Volume;
+  double FrontAzimuth = 180.0;
   std::string Description;
   // The --env environment, a float RGB latitude-longitude image; null without --env.
   vtkSmartPointer<vtkImageData> Environment;

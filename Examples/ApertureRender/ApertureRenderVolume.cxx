@@ -171,12 +171,14 @@ vtkSmartPointer<vtkImageData> Grab(vtkRenderWindow* window)
   return image;
 }
 
-// The scene: renderer, lights, camera, for volume `input` of property `property`.
-void SetUpScene(const Options& options, vtkImageData* volume, vtkRenderer* renderer)
+// The scene: renderer, lights, camera (by default from `frontAzimuth`, 15 degrees up).
+void SetUpScene(
+  const Options& options, vtkImageData* volume, double frontAzimuth, vtkRenderer* renderer)
 {
   renderer->SetBackground(options.Background);
   renderer->AutomaticLightCreationOff();
-  const double eyeAzimuth = std::isnan(options.CameraAzimuth) ? 180.0 : options.CameraAzimuth;
+  const double eyeAzimuth =
+    std::isnan(options.CameraAzimuth) ? frontAzimuth : options.CameraAzimuth;
   const double eyeElevation = std::isnan(options.CameraElevation) ? 15.0 : options.CameraElevation;
   std::vector<Sun> suns = options.Suns;
   if (suns.empty() && !options.NoSun)
@@ -227,7 +229,7 @@ vtkSmartPointer<vtkVolumeProperty> MakeProperty(
   property->SetInterpolationTypeToLinear();
   property->ShadeOn();
   property->SetAmbient(1.0);
-  property->SetDiffuse(0.8);
+  property->SetDiffuse(0.6);
   property->SetSpecular(0.2);
   return property;
 }
@@ -247,7 +249,7 @@ vtkSmartPointer<vtkVolumeMapper> MakeMapper(
       mode == "smoothstep" ? vtkApertureVolumeMapper::SMOOTHSTEP : vtkApertureVolumeMapper::EXACT);
     apertures->SetLightRadius(vtkMath::RadiansFromDegrees(
       options.Suns.empty() ? 6.0 : std::max(options.Suns[0].Radius, 0.01)));
-    apertures->SetSkyColor(options.Sky[0] * 2.0, options.Sky[1] * 2.0, options.Sky[2] * 2.0);
+    apertures->SetSkyColor(options.Sky[0] * 1.5, options.Sky[1] * 1.5, options.Sky[2] * 1.5);
     mapper = apertures;
   }
   mapper->SetInputData(volume);
@@ -316,6 +318,9 @@ bool LoadVolume(const std::string& name, MessageCapture& messages, Input& input,
     return false;
   }
   input.Volume = image;
+  // NIfTI's axes are RAS, the face toward +y; DICOM's, and so most MetaImage and NRRD files', LPS.
+  input.FrontAzimuth =
+    EndsWith(Lower(name), ".nii") || EndsWith(Lower(name), ".nii.gz") ? 0.0 : 180.0;
   const double* spacing = image->GetSpacing();
   std::ostringstream description;
   description << vtkApertureText::QuoteName(name) << ", a volume of " << dims[0] << " x " << dims[1]
@@ -374,7 +379,7 @@ int ShowVolume(const Options& options, const Input& input, MessageCapture& messa
   window->SetOffScreenRendering(!options.Interactive);
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
-  SetUpScene(options, input.Volume, renderer);
+  SetUpScene(options, input.Volume, input.FrontAzimuth, renderer);
   vtkNew<vtkVolume> volume;
   volume->SetProperty(property);
   renderer->AddVolume(volume);

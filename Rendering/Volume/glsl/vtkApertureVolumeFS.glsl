@@ -50,14 +50,14 @@ float apertureLightShare(sphericalCapCap aperture, sphericalCapCap light)
 
 vec4 computeLighting(vec4 color, int component, float label)
 {
-  // Half an aperture voxel toward the eye: the surface layer of opaque matter takes the light of its
+  // One aperture voxel toward the eye: the surface layer of opaque matter takes the light of its
   // outside, as the eye sees it, instead of banding with the depth a ray stops at in the layer.
   vec3 toEye = -g_dirStep * apertureTextureScale * apertureGridSize;
   float toEyeLength = length(toEye);
   vec3 at = g_dataPos * apertureTextureScale + apertureTextureShift;
   if (toEyeLength > 0.0)
   {
-    at += 0.5 * toEye / (toEyeLength * apertureGridSize);
+    at += toEye / (toEyeLength * apertureGridSize);
   }
   vec4 stored = texture(apertureVolume, at);
   vec3 bent = stored.xyz * 2.0 - 1.0;
