@@ -338,7 +338,10 @@ int vtkVolumeAperturePrecompute::RequestUpdateExtent(
   int request[6];
   for (int a = 0; a < 3; ++a)
   {
-    const int grow = static_cast<int>(std::ceil(halo / std::max(spacing[a], 1e-300))) + step;
+    // Bad spacings are RequestData's to refuse; here they only must not overflow.
+    const double span = whole[2 * a + 1] - whole[2 * a];
+    const double cells = spacing[a] > 0.0 ? std::ceil(halo / spacing[a]) : span;
+    const int grow = static_cast<int>(std::min(std::isfinite(cells) ? cells : span, span)) + step;
     request[2 * a] = std::max(whole[2 * a], update[2 * a] * step - grow);
     request[2 * a + 1] = std::min(whole[2 * a + 1], update[2 * a + 1] * step + grow);
   }
