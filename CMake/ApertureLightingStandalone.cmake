@@ -84,6 +84,7 @@ endif ()
 # tests, a module two folders deep would take the same Testing/ folder for its own.
 set(APERTURELIGHTING_MODULE_FILES
   "${CMAKE_CURRENT_SOURCE_DIR}/Core/vtk.module"
+  "${CMAKE_CURRENT_SOURCE_DIR}/IO/DICOM/vtk.module"
   "${CMAKE_CURRENT_SOURCE_DIR}/IO/GDAL/vtk.module"
   "${CMAKE_CURRENT_SOURCE_DIR}/IO/Image/vtk.module"
   "${CMAKE_CURRENT_SOURCE_DIR}/IO/OpenEXR/vtk.module"
@@ -92,7 +93,7 @@ set(APERTURELIGHTING_MODULE_FILES
   "${CMAKE_CURRENT_SOURCE_DIR}/Volume/vtk.module")
 vtk_module_scan(
   MODULE_FILES      ${APERTURELIGHTING_MODULE_FILES}
-  REQUEST_MODULES   VTK::ApertureLightingCore VTK::ApertureLightingIOGDAL
+  REQUEST_MODULES   VTK::ApertureLightingCore VTK::ApertureLightingIODICOM VTK::ApertureLightingIOGDAL
                     VTK::ApertureLightingIOImage VTK::ApertureLightingIOOpenEXR
                     VTK::ApertureLightingRendering VTK::ApertureLightingVolume
                     VTK::ApertureLightingRenderingVolume

@@ -11,6 +11,7 @@ packages=(
   cmake make g++ pkg-config clang-format
   libvtk9-dev python3-vtk9 python3-numpy
   libembree-dev libopenexr-dev libglm-dev libx11-dev libgdal-dev gdal-bin
+  libvtk-dicom-dev python3-vtk-dicom
   xvfb xauth openmpi-bin libopenmpi-dev
 )
 if [ "${1:-}" = "fuzz" ]; then

@@ -513,8 +513,7 @@ bool LoadInput(const Options& options, MessageCapture& messages, Input& input, s
     }
     if (vtksys::SystemTools::FileIsDirectory(name))
     {
-      error = vtkApertureText::QuoteName(name) + " is a directory, not a file";
-      return false;
+      return LoadDICOM(name, messages, input, error);
     }
     if (vtksys::SystemTools::FileLength(name) == 0)
     {

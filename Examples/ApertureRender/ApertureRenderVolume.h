@@ -9,7 +9,8 @@
 
 =========================================================================*/
 // aperture-render's volumes: reading CT and MR files (.vti, .mha/.mhd, .nrrd/.nhdr, .nii and
-// .nii.gz through VTK's readers), an opacity preset or ramp, and the picture drawn by
+// .nii.gz through VTK's readers, DICOM series from a folder through vtkApertureDICOMReader), an
+// opacity preset or ramp, and the picture drawn by
 // vtkApertureVolumeMapper (or, with --iso, an isosurface handed to the mesh pipeline).
 
 #ifndef ApertureRenderVolume_h
@@ -30,6 +31,11 @@ bool IsVolumeFile(const std::string& name);
 // with one sentence in `error` when the file cannot be used.
 bool LoadVolume(
   const std::string& name, MessageCapture& messages, Input& input, std::string& error);
+
+// Reads the DICOM series of a folder into input.Volume. False with one sentence in `error` when
+// the folder holds none, several, or one with missing slices.
+bool LoadDICOM(
+  const std::string& folder, MessageCapture& messages, Input& input, std::string& error);
 
 // --iso: the isosurface of input.Volume at options.Iso becomes input.Mesh. False with one
 // sentence in `error` when it is empty.

@@ -479,7 +479,9 @@ for up_axis in ("z", "y"):
 
 # Bad input: one line, non-zero exit.
 expect_failure("missing file", [path("no-such.obj"), "-o", path("x.png")], 1, "does not exist")
-expect_failure("directory", [WORK, "-o", path("x.png")], 1, "is a directory")
+os.makedirs(path("empty-folder"), exist_ok=True)
+expect_failure("a folder without DICOM", [path("empty-folder"), "-o", path("x.png")], 1,
+               "no DICOM image series")
 expect_failure("empty file", [write_bytes("empty.obj", b""), "-o", path("x.png")], 1, "is empty")
 expect_failure("unknown format", [write_bytes("model.xyz", b"1 2 3"), "-o", path("x.png")], 1,
                "unknown format")
@@ -741,6 +743,25 @@ if os.path.exists(path("volume,-every-mode.png")):
     panels = read_png(path("volume,-every-mode.png"))[:, :, :3].astype(float)
     standard, exact = panels[:, :200], panels[:, 200:400]
     check(np.abs(standard - exact).mean() > 2.0, "volume: aperture shading is not VTK's")
+# DICOM: the MR written as a CT series of one file a slice by vtk-dicom, read from its folder.
+from vtkdicom import vtkDICOMCTGenerator, vtkDICOMWriter  # noqa: E402 (python3-vtk-dicom)
+series = path("dicom-series")
+if os.path.isdir(series):
+    for old in os.listdir(series):
+        os.remove(os.path.join(series, old))
+os.makedirs(series, exist_ok=True)
+dicom = vtkDICOMWriter()
+generator = vtkDICOMCTGenerator()
+dicom.SetGenerator(generator)
+dicom.SetInputData(volume)
+dicom.SetFilePrefix(series)
+dicom.SetFilePattern("%s/IM-%04d.dcm")
+dicom.SetFileDimensionality(2)
+dicom.Write()
+expect_picture("volume from a DICOM folder", [series, "--size", "200x150"], needles=(described,))
+os.remove(os.path.join(series, "IM-0010.dcm"))
+expect_failure("DICOM with a missing slice", [series, "-o", path("x.png")], 1,
+               "slices are missing")
 expect_picture("volume isosurface", [mr, "--iso", "60", *FAST], needles=("--iso",))
 flat = vtkImageData()
 flat.SetDimensions(40, 30, 1)
