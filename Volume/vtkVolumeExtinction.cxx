@@ -244,8 +244,9 @@ std::vector<float> vtkVolumeExtinction::Compute(
   std::vector<double> opacity(TableSize);
   property->GetScalarOpacity(0)->GetTable(range[0], range[1], TableSize, opacity.data());
   std::vector<double> table(TableSize);
-  std::transform(opacity.begin(), opacity.end(), table.begin(), [unit](double alpha) {
-    return -std::log1p(-std::min(std::max(alpha, 0.0), MaximumOpacity)) / unit;
+  const double most = MaximumOpacity; // a copy: std::min takes references
+  std::transform(opacity.begin(), opacity.end(), table.begin(), [unit, most](double alpha) {
+    return -std::log1p(-std::min(std::max(alpha, 0.0), most)) / unit;
   });
   std::vector<float> sigma(static_cast<size_t>(image->GetNumberOfPoints()));
   SigmaWorker worker{ &table, range[0],
