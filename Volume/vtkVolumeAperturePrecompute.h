@@ -59,6 +59,7 @@
 
 #include "vtkApertureLightingVolumeModule.h" // For export macro
 #include "vtkImageAlgorithm.h"
+#include "vtkTimeStamp.h" // For UnitDistanceTime
 
 class vtkVolumeProperty;
 
@@ -110,7 +111,8 @@ public:
   double GetEffectiveMaximumDistance(const double bounds[6]) const;
 
   /**
-   * Includes the volume property's time.
+   * Includes the times of what in the volume property stops light (its scalar opacity function
+   * and unit distance), not the rest: a colour change does not recompute the apertures.
    */
   vtkMTimeType GetMTime() override;
 
@@ -128,6 +130,9 @@ protected:
   int ApertureGridStep = 1;
 
 private:
+  double SeenUnitDistance = -1.0; // the unit distance GetMTime() last saw
+  vtkTimeStamp UnitDistanceTime;
+
   vtkVolumeAperturePrecompute(const vtkVolumeAperturePrecompute&) = delete;
   void operator=(const vtkVolumeAperturePrecompute&) = delete;
 };
