@@ -16,7 +16,6 @@
 #include "vtkInformationVector.h"
 #include "vtkMatrix3x3.h"
 #include "vtkObjectFactory.h"
-#include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkSMPTools.h"
 #include "vtkSphericalCap.h"
@@ -276,21 +275,7 @@ vtkVolumeAperturePrecompute::~vtkVolumeAperturePrecompute()
 vtkMTimeType vtkVolumeAperturePrecompute::GetMTime()
 {
   vtkMTimeType time = this->Superclass::GetMTime();
-  vtkVolumeProperty* property = this->VolumeProperty;
-  if (!property)
-  {
-    return time;
-  }
-  // Only what stops light counts: a new colour map or shading leaves the apertures as they are.
-  const double unit = property->GetScalarOpacityUnitDistance(0);
-  if (!(unit == this->SeenUnitDistance))
-  {
-    this->SeenUnitDistance = unit;
-    this->UnitDistanceTime.Modified();
-  }
-  const vtkMTimeType opacity = property->GetScalarOpacityMTime(0);
-  return std::max({ time, opacity, property->GetScalarOpacity(0)->GetMTime(),
-    this->UnitDistanceTime.GetMTime() });
+  return this->VolumeProperty ? std::max(time, this->VolumeProperty->GetMTime()) : time;
 }
 
 //------------------------------------------------------------------------------

@@ -59,7 +59,6 @@
 
 #include "vtkApertureLightingVolumeModule.h" // For export macro
 #include "vtkImageAlgorithm.h"
-#include "vtkTimeStamp.h" // For UnitDistanceTime
 
 class vtkVolumeProperty;
 
@@ -111,8 +110,7 @@ public:
   double GetEffectiveMaximumDistance(const double bounds[6]) const;
 
   /**
-   * Includes the times of what in the volume property stops light (its scalar opacity function
-   * and unit distance), not the rest: a colour change does not recompute the apertures.
+   * Includes the volume property's time.
    */
   vtkMTimeType GetMTime() override;
 
@@ -130,9 +128,6 @@ protected:
   int ApertureGridStep = 1;
 
 private:
-  double SeenUnitDistance = -1.0; // the unit distance GetMTime() last saw
-  vtkTimeStamp UnitDistanceTime;
-
   vtkVolumeAperturePrecompute(const vtkVolumeAperturePrecompute&) = delete;
   void operator=(const vtkVolumeAperturePrecompute&) = delete;
 };

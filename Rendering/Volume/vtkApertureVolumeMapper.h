@@ -29,8 +29,8 @@
  * masks, the interactive sample-distance reduction, the volume's transform. Apertures come from
  * SetApertureData() (the output of a vtkVolumeAperturePrecompute on this mapper's input), or,
  * when none is set, from the mapper's own precompute (GetAperturePrecompute() for its settings),
- * rerun when the input, the opacity function or its unit distance changes (not for colours): drag
- * the opacity curve and the shadows follow (at 128³ apertures, about 2 s on two cores).
+ * rerun when the input or the volume property changes: drag the opacity curve and the shadows
+ * follow (at 128³ apertures, about 2 s on two cores).
  *
  * Where aperture lighting cannot apply (Shade off, a blend mode other than composite, more than
  * one component, a 2D transfer function, several inputs, apertures that do not fit) the mapper

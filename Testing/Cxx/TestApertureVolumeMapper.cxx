@@ -248,13 +248,8 @@ bool TestShell()
   const vtkMTimeType time = mapper->GetAperturePrecompute()->GetOutput()->GetMTime();
   property->GetScalarOpacity()->AddPoint(0.5, 0.2);
   scene.Pixel();
-  const vtkMTimeType recomputed = mapper->GetAperturePrecompute()->GetOutput()->GetMTime();
-  ok &= Report(recomputed > time, "a transfer-function change recomputes the apertures", 1.0, 1.0);
-  // A colour change does not: apertures depend on what stops light only.
-  property->GetRGBTransferFunction()->AddRGBPoint(0.5, 1.0, 0.5, 0.5);
-  scene.Pixel();
-  ok &= Report(mapper->GetAperturePrecompute()->GetOutput()->GetMTime() == recomputed,
-    "a colour change does not recompute them", 1.0, 1.0);
+  ok &= Report(mapper->GetAperturePrecompute()->GetOutput()->GetMTime() > time,
+    "a transfer-function change recomputes the apertures", 1.0, 1.0);
 
   // Shade off draws VTK's picture, and VTK's mapper on the volume this mapper drew draws as on a
   // volume of its own: nothing of this mapper's stays in the volume's shader property.
