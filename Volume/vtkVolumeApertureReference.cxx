@@ -18,6 +18,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkSMPTools.h"
+#include "vtkSphericalCap.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkVolumeExtinction.h"
 #include "vtkVolumeProperty.h"
@@ -140,7 +141,7 @@ void StoreSphere(vtkIdType i, double sum, const double moment[3], int samples,
   vtkMatrix3x3* rotation, vtkFloatArray* values, vtkFloatArray* bent)
 {
   const double solid = 4.0 * Pi * sum / samples;
-  values->SetValue(i, static_cast<float>(std::acos(std::max(-1.0, 1.0 - solid / (2.0 * Pi)))));
+  values->SetValue(i, static_cast<float>(vtkSphericalCap::CapRadiusFromSolidAngle(solid)));
   const double length =
     std::sqrt(moment[0] * moment[0] + moment[1] * moment[1] + moment[2] * moment[2]);
   double unit[3] = { 0.0, 0.0, 1.0 };
