@@ -57,6 +57,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <sstream>
 #include <vector>
 
@@ -596,6 +598,15 @@ std::string HorizonProblem(vtkDataSet* data, const std::string& name)
   {
     return vtkApertureText::Quote(name) + " has " + std::to_string(array->GetNumberOfTuples()) +
       " tuples for " + std::to_string(data->GetNumberOfPoints()) + " points";
+  }
+  // vtkAperturePrecompute names components by their middle azimuths; turned sectors do not
+  // start where the shading expects sector 0.
+  const char* first = array->GetComponentName(0);
+  if (first && std::strncmp(first, "Az", 2) == 0 &&
+    std::abs(std::atof(first + 2) - vtkHorizonLighting::SectorAzimuth(0, sectors)) > 1e-3)
+  {
+    return vtkApertureText::Quote(name) + "'s sectors are turned (its first is " + first +
+      "); the Horizon mode needs SectorRotation 0";
   }
   // Single-precision pi/2 lies just past the double one.
   const double pole = static_cast<float>(0.5 * vtkMath::Pi());

@@ -12,6 +12,7 @@ packages=(
   libvtk9-dev python3-vtk9 python3-numpy
   libembree-dev libopenexr-dev libglm-dev libx11-dev libgdal-dev gdal-bin
   libvtk-dicom-dev python3-vtk-dicom
+  saga grass-core
   xvfb xauth openmpi-bin libopenmpi-dev
 )
 if [ "${1:-}" = "fuzz" ]; then

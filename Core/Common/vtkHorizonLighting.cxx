@@ -291,3 +291,10 @@ void vtkHorizonLighting::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LightSamples: " << LightSamples() << "\n";
   os << indent << "PolarLightSamples: " << PolarLightSamples() << "\n";
 }
+
+//------------------------------------------------------------------------------
+double vtkHorizonLighting::SectorAzimuth(int k, int sectors, double rotation)
+{
+  const double azimuth = std::fmod(rotation + 360.0 * (k + 0.5) / sectors, 360.0);
+  return azimuth < 0.0 ? azimuth + 360.0 : azimuth;
+}

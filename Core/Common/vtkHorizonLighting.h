@@ -80,6 +80,14 @@ public:
   VTK_WRAPEXCLUDE static double HorizonAt(const float* horizons, int sectors, double azimuth);
 
   /**
+   * The middle azimuth of sector k of `sectors` in degrees counter-clockwise from the grid's i
+   * axis, in [0, 360), with sector 0 starting at `rotation` degrees (vtkAperturePrecompute's
+   * SectorRotation; the shading here expects 0). vtkAperturePrecompute names the components of
+   * `HorizonAngles` "Az" and this.
+   */
+  static double SectorAzimuth(int k, int sectors, double rotation = 0.0);
+
+  /**
    * Azimuth samples of LightTransfer() for a light whose cap spans an interval of azimuths, and
    * for one around the zenith or nadir (all azimuths).
    */

@@ -473,6 +473,20 @@ bool vtkAperturePrecompute::vtkRun::ChooseMethod()
       "there is no "
         << vtkApertureText::Quote(this->Self->HorizonAnglesArrayName) << " array.");
   }
+  const vtkAperturePrecompute* self = this->Self;
+  if ((self->ComputeSkyViewFactor || self->ComputeSkyViewFactorCosine ||
+        self->ComputePositiveOpenness || self->ComputeNegativeOpenness) &&
+    !this->Horizons)
+  {
+    vtkWarningWithObjectMacro(this->Self,
+      "Sky-view factors and openness come from horizon sweeps of a height field; this update "
+      "casts rays, so there are none.");
+  }
+  if (!std::isfinite(self->SectorRotation))
+  {
+    vtkErrorWithObjectMacro(this->Self, "The sector rotation must be finite.");
+    return false;
+  }
   return true;
 }
 
@@ -492,6 +506,11 @@ bool vtkAperturePrecompute::vtkRun::SweepHorizons(const int extent[6])
   settings.AmbientOcclusion = self->ComputeAmbientOcclusion;
   settings.Horizons = self->ComputeHorizonAngles;
   settings.HorizonName = self->HorizonAnglesArrayName.c_str();
+  settings.SkyViewFactor = self->ComputeSkyViewFactor;
+  settings.SkyViewFactorCosine = self->ComputeSkyViewFactorCosine;
+  settings.PositiveOpenness = self->ComputePositiveOpenness;
+  settings.NegativeOpenness = self->ComputeNegativeOpenness;
+  settings.SectorRotation = self->SectorRotation;
   settings.BentNormalName = self->BentNormalArrayName.c_str();
   settings.RadiusName = self->ApertureRadiusArrayName.c_str();
   settings.OcclusionName = self->AmbientOcclusionArrayName.c_str();
@@ -917,6 +936,11 @@ void vtkAperturePrecompute::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "HeightScale: " << this->HeightScale << "\n";
   os << indent << "ComputeAmbientOcclusion: " << this->ComputeAmbientOcclusion << "\n";
   os << indent << "ComputeHorizonAngles: " << this->ComputeHorizonAngles << "\n";
+  os << indent << "ComputeSkyViewFactor: " << this->ComputeSkyViewFactor << "\n";
+  os << indent << "ComputeSkyViewFactorCosine: " << this->ComputeSkyViewFactorCosine << "\n";
+  os << indent << "ComputePositiveOpenness: " << this->ComputePositiveOpenness << "\n";
+  os << indent << "ComputeNegativeOpenness: " << this->ComputeNegativeOpenness << "\n";
+  os << indent << "SectorRotation: " << this->SectorRotation << "\n";
   os << indent << "ComputeVisibilityMask: " << this->ComputeVisibilityMask << "\n";
   os << indent << "VisibilityMaskBits: " << this->VisibilityMaskBits << "\n";
   os << indent << "VisibilityMaskRaysPerCell: " << this->VisibilityMaskRaysPerCell << "\n";

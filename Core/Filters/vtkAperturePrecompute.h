@@ -198,6 +198,48 @@ public:
 
   ///@{
   /**
+   * Terrain products of the same horizons (height fields swept for horizons only; with rays the
+   * filter warns and writes none), each a float point array, NaN at no-data texels, its unit in
+   * vtkDataArray::UNITS_LABEL(). Default off.
+   * - `SkyViewFactor`: Ω/2π, the visible fraction of the sky above the horizontal plane
+   *   (Zakšek et al. 2011; RVT's SVF): 1 − (1/D) Σ sin(max(h_k, 0)).
+   * - `SkyViewFactorCosine`: the cosine-weighted sky-view factor (Häntzschel et al. 2005;
+   *   SAGA's `SVF`): (1/π) ∫ n·ω dω over the sky above max(h_k, 0), not clipped at the tangent
+   *   plane. It equals `AmbientOcclusion` where every horizon is at or above both the horizontal
+   *   and the tangent plane (valleys, pits); elsewhere AmbientOcclusion counts the tangent
+   *   hemisphere below the horizontal as open and this does not ((1 + cos slope)/2 on a plane).
+   * - `PositiveOpenness`, `NegativeOpenness` (degrees): Yokoyama et al. (2002) within
+   *   MaximumDistance, the mean of 90° − h_k and of 90° + (the lowest elevation angle in sector
+   *   k), over the sectors with a sample in range (edges of the grid see fewer; NaN with none).
+   *   The negative one sweeps the negated heights too: about 1.6 times the time.
+   */
+  vtkSetMacro(ComputeSkyViewFactor, bool);
+  vtkGetMacro(ComputeSkyViewFactor, bool);
+  vtkBooleanMacro(ComputeSkyViewFactor, bool);
+  vtkSetMacro(ComputeSkyViewFactorCosine, bool);
+  vtkGetMacro(ComputeSkyViewFactorCosine, bool);
+  vtkBooleanMacro(ComputeSkyViewFactorCosine, bool);
+  vtkSetMacro(ComputePositiveOpenness, bool);
+  vtkGetMacro(ComputePositiveOpenness, bool);
+  vtkBooleanMacro(ComputePositiveOpenness, bool);
+  vtkSetMacro(ComputeNegativeOpenness, bool);
+  vtkGetMacro(ComputeNegativeOpenness, bool);
+  vtkBooleanMacro(ComputeNegativeOpenness, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Degrees counter-clockwise from the grid's i axis where sector 0 of the horizon sweeps
+   * starts. Default 0: sector k covers [360k/D, 360(k+1)/D). GRASS's r.horizon directions
+   * start, start + step, … are the sectors' middles with SectorRotation = start − 180/D. The
+   * mappers' Horizon mode expects 0 (it warns otherwise).
+   */
+  vtkSetMacro(SectorRotation, double);
+  vtkGetMacro(SectorRotation, double);
+  ///@}
+
+  ///@{
+  /**
    * Also keep which cells of each point's hemisphere are open, for points that cast rays
    * (horizon sweeps warn and keep none). Default off. `VisibilityMask` (unsigned char,
    * VisibilityMaskBits / 8 components) holds one bit per cell of vtkVisibilityMask's equal-area
@@ -373,6 +415,11 @@ protected:
   double HeightScale = 1.0;
   bool ComputeAmbientOcclusion = false;
   bool ComputeHorizonAngles = false;
+  bool ComputeSkyViewFactor = false;
+  bool ComputeSkyViewFactorCosine = false;
+  bool ComputePositiveOpenness = false;
+  bool ComputeNegativeOpenness = false;
+  double SectorRotation = 0.0;
   bool ComputeVisibilityMask = false;
   int VisibilityMaskBits = 256;
   int VisibilityMaskRaysPerCell = 1;

@@ -71,9 +71,14 @@ bool CheckGrid(const vtkHorizonApertures::Grid& grid, Field& field, std::string&
     error = "The grid spacing must be positive and finite.";
     return false;
   }
-  if (grid.Sectors < 1 || !(grid.MaximumDistance > 0.0))
+  if (grid.Sectors < 1 || grid.Sectors > 65535 || !(grid.MaximumDistance > 0.0))
   {
-    error = "Sectors and MaximumDistance must be positive.";
+    error = "Sectors (at most 65535) and MaximumDistance must be positive.";
+    return false;
+  }
+  if (!std::isfinite(grid.SectorRotation))
+  {
+    error = "The sector rotation must be finite.";
     return false;
   }
   const vtkIdType* e = grid.OutputExtent;
@@ -199,14 +204,14 @@ struct Sector
   double Dphi, Chord[2], Cos, Sin;
 
   Sector() = default;
-  Sector(int sector, int sectors)
+  Sector(int sector, int sectors, double rotation)
   {
     this->Dphi = 2.0 * Pi / sectors;
-    const double phi0 = sector * this->Dphi, phi1 = (sector + 1) * this->Dphi;
+    const double phi0 = rotation + sector * this->Dphi, phi1 = phi0 + this->Dphi;
     this->Chord[0] = std::sin(phi1) - std::sin(phi0);
     this->Chord[1] = std::cos(phi0) - std::cos(phi1);
-    this->Cos = std::cos((sector + 0.5) * this->Dphi);
-    this->Sin = std::sin((sector + 0.5) * this->Dphi);
+    this->Cos = std::cos(phi0 + 0.5 * this->Dphi);
+    this->Sin = std::sin(phi0 + 0.5 * this->Dphi);
   }
 };
 
@@ -245,14 +250,14 @@ Lines::Lines(const Field& f, const vtkHorizonApertures::Grid& grid, int sector, 
   // Opposite sectors get their lines from the same one, so that they sample alike.
   const int half = grid.Sectors % 2 == 0 ? grid.Sectors / 2 : grid.Sectors;
   this->Count = paired ? 2 : 1;
-  this->Sectors[0] = Sector(sector, grid.Sectors);
+  this->Sectors[0] = Sector(sector, grid.Sectors, grid.SectorRotation);
   this->Index[0] = sector;
   this->Index[1] = sector + half;
   if (paired)
   {
-    this->Sectors[1] = Sector(sector + half, grid.Sectors);
+    this->Sectors[1] = Sector(sector + half, grid.Sectors, grid.SectorRotation);
   }
-  const Sector base(sector % half, grid.Sectors);
+  const Sector base(sector % half, grid.Sectors, grid.SectorRotation);
   this->Major = std::abs(base.Cos) / f.Spacing[0] >= std::abs(base.Sin) / f.Spacing[1] ? 0 : 1;
   const double along = this->Major == 0 ? base.Cos : base.Sin;
   const double across = this->Major == 0 ? base.Sin : base.Cos;
@@ -355,7 +360,9 @@ struct Scratch
 {
   std::vector<double> Occluder; // interpolated height; NaN: does not occlude
   std::vector<double> Receiver; // the receiving texel's height; NaN: none
-  std::vector<double> Slope[2]; // out: steepest slope per sample step, per sector of the pass
+  // Out: steepest slope per sample step, per sector of the pass (0, 1), and those of the negated
+  // samples (2, 3), which give the lowest elevations.
+  std::vector<double> Slope[4];
   std::vector<vtkIdType> Hull;
   // Suffix hulls of the previous block: a stack, and per sample of the block, where its push
   // wrote (-1: not pushed), what it overwrote, the stack size before it, and the highest
@@ -365,7 +372,7 @@ struct Scratch
   vtkIdType HullSize = 0, SuffixFirst = 0, SuffixSize = 0;
 
   // Sizes the buffers for a pass's groups, when a thread first takes one.
-  void Fit(vtkIdType lines, vtkIdType length, vtkIdType window, int sectors)
+  void Fit(vtkIdType lines, vtkIdType length, vtkIdType window, int sectors, bool lower)
   {
     if (!this->Hull.empty())
     {
@@ -376,6 +383,8 @@ struct Scratch
       v->resize(lines * length);
     }
     this->Slope[1].resize(sectors == 2 ? lines * length : 0);
+    this->Slope[2].resize(lower ? lines * length : 0);
+    this->Slope[3].resize(lower && sectors == 2 ? lines * length : 0);
     this->Hull.resize(length);
     for (auto* v : { &this->Suffix, &this->Position, &this->Overwritten, &this->Size })
     {
@@ -541,8 +550,8 @@ public:
   // Fills the scratch with the heights of the group's samples and receivers.
   void Gather(Scratch& s) const;
 
-  // Calls sink(output index, steepest slopes in world units, one per sector) for every
-  // receiver.
+  // Calls sink(output index, steepest slopes in world units: one per sector, then one per
+  // sector of the negated samples, NoSample where not swept) for every receiver.
   template <typename Sink>
   void Scatter(const Scratch& s, const Sink& sink) const;
 
@@ -644,17 +653,48 @@ void Group::Scatter(const Scratch& s, const Sink& sink) const
       {
         vtkIdType i, j;
         l.ToIJ(m, c + l.Nearest[m], i, j);
-        const double slopes[2] = { s.Slope[0][at] * perStep,
-          l.Count == 2 ? s.Slope[1][at] * perStep : NoSample };
+        double slopes[4];
+        for (int k = 0; k < 4; ++k)
+        {
+          slopes[k] = s.Slope[k].empty() ? NoSample : s.Slope[k][at] * perStep;
+        }
         sink(this->F.OutputIndex(i, j), slopes);
       }
     }
   }
 }
 
-// Sweeps all lines of a sector (or pair), groups in parallel.
+// Sweeps the lines of a group: each line once per sector, and with `lower` once more with its
+// samples negated.
+void SweepGroup(
+  Scratch& s, LineSweep& sweep, const Lines& lines, vtkIdType count, vtkIdType n, bool lower)
+{
+  for (vtkIdType c = 0; c < count; ++c)
+  {
+    double* z = &s.Occluder[c * n];
+    double* zr = &s.Receiver[c * n];
+    for (int k = 0; k < lines.Count; ++k) // the opposite sector sweeps the other way
+    {
+      sweep.Run(z, zr, &s.Slope[k][c * n], n, k == 1);
+    }
+    if (!lower)
+    {
+      continue;
+    }
+    std::transform(z, z + n, z, std::negate<double>());
+    std::transform(zr, zr + n, zr, std::negate<double>());
+    for (int k = 0; k < lines.Count; ++k)
+    {
+      sweep.Run(z, zr, &s.Slope[2 + k][c * n], n, k == 1);
+    }
+  }
+}
+
+// Sweeps all lines of a sector (or pair), groups in parallel; with `lower` also the negated
+// heights.
 template <typename Sink>
-void SweepSector(const Field& f, const Lines& lines, const float* normals, const Sink& sink)
+void SweepSector(
+  const Field& f, const Lines& lines, const float* normals, bool lower, const Sink& sink)
 {
   const vtkIdType groups = (lines.LastLine - lines.FirstLine + LinesPerGroup) / LinesPerGroup;
   vtkSMPThreadLocal<Scratch> scratch;
@@ -662,7 +702,7 @@ void SweepSector(const Field& f, const Lines& lines, const float* normals, const
     [&](vtkIdType begin, vtkIdType end)
     {
       Scratch& s = scratch.Local();
-      s.Fit(LinesPerGroup, lines.NMajor, lines.Window, lines.Count);
+      s.Fit(LinesPerGroup, lines.NMajor, lines.Window, lines.Count, lower);
       LineSweep sweep(s, lines.Window);
       for (vtkIdType g = begin; g < end; ++g)
       {
@@ -675,13 +715,7 @@ void SweepSector(const Field& f, const Lines& lines, const float* normals, const
           continue;
         }
         group.Gather(s);
-        for (vtkIdType c = 0; c < group.GetNumberOfLines(); ++c)
-        {
-          for (int k = 0; k < lines.Count; ++k) // the opposite sector sweeps the other way
-          {
-            sweep.Run(&s.Occluder[c * n], &s.Receiver[c * n], &s.Slope[k][c * n], n, k == 1);
-          }
-        }
+        SweepGroup(s, sweep, lines, group.GetNumberOfLines(), n, lower);
         group.Scatter(s, sink);
       }
     });
@@ -753,19 +787,40 @@ private:
   std::unique_ptr<float[]> Data;
 };
 
+// Whether any terrain product is asked for; whether one needs the negated heights' sweeps.
+bool WantsProducts(const vtkHorizonApertures::Buffers& out)
+{
+  return out.SkyViewFactor || out.SkyViewFactorCosine || out.PositiveOpenness ||
+    out.NegativeOpenness;
+}
+
 // The per-texel deficit sums, in the output arrays until Finish() turns them into outputs; the
-// horizons into their planes.
+// horizons into their planes. The products' sums likewise: the sky's deficit (solid angle, and
+// its projection on the normal), and Σ (π/2 − h) over the sectors with samples, counted in
+// `Sampled`.
 class Accumulator
 {
 public:
-  Accumulator(const Lines& lines, const vtkHorizonApertures::Buffers& out, float* planes[2])
+  Accumulator(const Lines& lines, const vtkHorizonApertures::Buffers& out, float* planes[2],
+    unsigned short* sampled)
     : L(lines)
     , Out(out)
     , Planes{ planes[0], planes[1] }
+    , Sampled(sampled)
   {
   }
 
-  void operator()(vtkIdType o, const double slopes[2]) const
+  void operator()(vtkIdType o, const double slopes[4]) const
+  {
+    this->AddApertures(o, slopes);
+    if (this->Sampled)
+    {
+      this->AddProducts(o, slopes);
+    }
+  }
+
+private:
+  void AddApertures(vtkIdType o, const double slopes[4]) const
   {
     const float* n = &this->Out.Normals[3 * o];
     const double down[2] = { -n[0] / n[2], -n[1] / n[2] }; // the tangent plane's slope along x, y
@@ -789,21 +844,88 @@ public:
     }
   }
 
-private:
+  void AddProducts(vtkIdType o, const double slopes[4]) const
+  {
+    const vtkHorizonApertures::Buffers& out = this->Out;
+    const float* n = &out.Normals[3 * o];
+    double sky[4] = { 0.0, 0.0, 0.0, 0.0 }; // elevations 0 … max(h, 0) of the sky
+    for (int k = 0; k < this->L.Count; ++k)
+    {
+      const double top = std::max(slopes[k], 0.0), cosA = 1.0 / std::sqrt(1.0 + top * top);
+      Deficit(
+        this->L.Sectors[k].Dphi, this->L.Sectors[k].Chord, FastAtan(top), top * cosA, cosA, sky);
+      if (slopes[k] == NoSample)
+      {
+        continue;
+      }
+      ++this->Sampled[o];
+      if (out.PositiveOpenness)
+      {
+        out.PositiveOpenness[o] += static_cast<float>(0.5 * Pi - FastAtan(slopes[k]));
+      }
+      if (out.NegativeOpenness)
+      {
+        out.NegativeOpenness[o] += static_cast<float>(0.5 * Pi - FastAtan(slopes[2 + k]));
+      }
+    }
+    if (out.SkyViewFactor)
+    {
+      out.SkyViewFactor[o] += static_cast<float>(sky[0]);
+    }
+    if (out.SkyViewFactorCosine)
+    {
+      out.SkyViewFactorCosine[o] +=
+        static_cast<float>(n[0] * sky[1] + n[1] * sky[2] + n[2] * sky[3]);
+    }
+  }
+
   const Lines& L;
   const vtkHorizonApertures::Buffers& Out;
   float* const Planes[2];
+  unsigned short* const Sampled;
 };
 
+// The products from their sums; NaN where not valid.
+void FinishProducts(const vtkHorizonApertures::Buffers& out, vtkIdType o, unsigned short sampled)
+{
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const bool valid = out.Valid[o] != 0;
+  if (out.SkyViewFactor)
+  {
+    out.SkyViewFactor[o] =
+      valid ? static_cast<float>(1.0 - out.SkyViewFactor[o] / (2.0 * Pi)) : nan;
+  }
+  if (out.SkyViewFactorCosine)
+  {
+    const double open = out.Normals[3 * o + 2] - out.SkyViewFactorCosine[o] / Pi;
+    out.SkyViewFactorCosine[o] =
+      valid ? static_cast<float>(vtkMath::ClampValue(open, 0.0, 1.0)) : nan;
+  }
+  for (float* openness : { out.PositiveOpenness, out.NegativeOpenness })
+  {
+    if (openness)
+    {
+      openness[o] = valid && sampled > 0
+        ? static_cast<float>(vtkMath::DegreesFromRadians(double(openness[o]) / sampled))
+        : nan;
+    }
+  }
+}
+
 // The open hemisphere less the deficits: radius, bent normal, ambient occlusion; no-data texels
-// closed.
-void Finish(const vtkHorizonApertures::Buffers& out, vtkIdType texels, int sectors)
+// closed. Then the products, with `sampled` sectors per texel (null without products).
+void Finish(const vtkHorizonApertures::Buffers& out, vtkIdType texels, int sectors,
+  const unsigned short* sampled)
 {
   vtkSMPTools::For(0, texels,
     [&](vtkIdType first, vtkIdType last)
     {
       for (vtkIdType o = first; o < last; ++o)
       {
+        if (sampled)
+        {
+          FinishProducts(out, o, sampled[o]);
+        }
         float* bent = &out.BentNormals[3 * o];
         const float* n = &out.Normals[3 * o];
         if (!out.Valid[o])
@@ -865,6 +987,16 @@ bool vtkHorizonApertures::Compute(const Grid& grid, const Buffers& output, std::
   ComputeNormals(f, output.Normals, output.Valid);
   std::fill_n(output.BentNormals, 3 * texels, 0.0f);
   std::fill_n(output.ApertureRadius, texels, 0.0f);
+  const bool products = WantsProducts(output);
+  std::vector<unsigned short> sampled(products ? texels : 0, 0);
+  for (float* sum : { output.SkyViewFactor, output.SkyViewFactorCosine, output.PositiveOpenness,
+         output.NegativeOpenness })
+  {
+    if (sum)
+    {
+      std::fill_n(sum, texels, 0.0f);
+    }
+  }
 
   // Opposite sectors share their lines: one pass gathers and scatters both.
   const bool paired = grid.Sectors % 2 == 0;
@@ -875,7 +1007,8 @@ bool vtkHorizonApertures::Compute(const Grid& grid, const Buffers& output, std::
   {
     buffered.emplace_back(f, grid, pass, paired);
     float* toPlanes[2] = { planes.Plane(pass, 0), planes.Plane(pass, 1) };
-    SweepSector(f, buffered.back(), output.Normals, Accumulator(buffered.back(), output, toPlanes));
+    SweepSector(f, buffered.back(), output.Normals, output.NegativeOpenness != nullptr,
+      Accumulator(buffered.back(), output, toPlanes, products ? sampled.data() : nullptr));
     if (buffered.size() == HorizonPlanes::PassesPerFlush || pass + 1 == passes)
     {
       planes.Flush(buffered.data(), static_cast<int>(buffered.size()));
@@ -887,7 +1020,7 @@ bool vtkHorizonApertures::Compute(const Grid& grid, const Buffers& output, std::
       return false;
     }
   }
-  Finish(output, texels, grid.Sectors);
+  Finish(output, texels, grid.Sectors, products ? sampled.data() : nullptr);
   return true;
 }
 
@@ -935,8 +1068,8 @@ bool vtkHorizonApertures::ComputeHorizons(
   ComputeNormals(f, normals.data(), valid.data());
   horizons.assign(f.OutNx * f.OutNy, std::numeric_limits<float>::quiet_NaN());
   float* h = horizons.data();
-  SweepSector(f, Lines(f, grid, sector, false), normals.data(),
-    [h](vtkIdType o, const double slopes[2]) { h[o] = static_cast<float>(std::atan(slopes[0])); });
+  SweepSector(f, Lines(f, grid, sector, false), normals.data(), false,
+    [h](vtkIdType o, const double slopes[4]) { h[o] = static_cast<float>(std::atan(slopes[0])); });
   return true;
 }
 

@@ -60,6 +60,15 @@
  * horizons (Buffers::Horizons, 4 bytes a sector) go first to planes of 8 sectors (32 bytes a
  * texel more), which fill the per-texel records together every 4 passes.
  *
+ * Terrain products, from the same horizons (h⁺ the horizon, h⁻ that of the negated heights,
+ * i.e. minus the lowest elevation angle, which the same lines give by a second sweep of their
+ * negated samples): the sky-view factor Ω/2π of the sky above the horizontal plane (Zakšek et
+ * al. 2011), 1 − Σ Δφ sin(max(h⁺, 0)) / 2π; its cosine-weighted form (Häntzschel et al. 2005,
+ * SAGA's SVF), (1/π) ∫ n·ω over the sky above max(h⁺, 0), integrated per sector as the
+ * apertures are, without clipping at the tangent plane; and the openness of Yokoyama et al.
+ * (2002), the mean over sectors of 90° − h⁺ (positive) and 90° − h⁻ (negative), in degrees,
+ * over the sectors that have a sample in range (NaN where none has).
+ *
  * Normals are those of the triangulated surface vtkAperturePrecompute's rays see (cells split
  * as (i,j)(i+1,j)(i+1,j+1) and (i,j)(i+1,j+1)(i,j+1)): the normalised sum of the unit normals of
  * a texel's up to six triangles with valid corners, so that both methods measure the same
@@ -106,6 +115,10 @@ public:
     /// Index of texel (0, 0) in the whole DEM, on which the lines are anchored: a tile passes
     /// its offset so that it samples as the whole DEM does.
     vtkIdType Origin[2] = { 0, 0 };
+    /// Where sector 0 starts, radians counter-clockwise from +x: sector k covers
+    /// [SectorRotation + 2πk/D, SectorRotation + 2π(k+1)/D). GRASS's r.horizon directions are
+    /// sector middles with SectorRotation = start − π/D.
+    double SectorRotation = 0.0;
   };
 
   /// The caller's arrays for the output extent (i fastest): 3, 1, 1, 3, 1 and Sectors values
@@ -120,6 +133,14 @@ public:
     /// The horizon h of each sector (sector k at k + Sectors × texel), radians; π/2 (closed)
     /// where not valid; may be null.
     float* Horizons = nullptr;
+    ///@{
+    /// Terrain products (see the class description): the sky-view factors in [0, 1], the
+    /// openness in degrees; NaN where not valid; each may be null.
+    float* SkyViewFactor = nullptr;
+    float* SkyViewFactorCosine = nullptr;
+    float* PositiveOpenness = nullptr;
+    float* NegativeOpenness = nullptr;
+    ///@}
   };
 
   /// Per texel of the output extent, i fastest, in arrays of its own.

@@ -13,12 +13,15 @@
 #include "vtkApertureMemory.h"
 #include "vtkApertureValidMask.h"
 #include "vtkHorizonApertures.h"
+#include "vtkHorizonLighting.h"
 
 #include "vtkArrayDispatch.h"
 #include "vtkDataArray.h"
 #include "vtkDataArrayRange.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkMath.h"
 #include "vtkMatrix3x3.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -36,11 +39,13 @@
 
 namespace
 {
-// An array of `tuples` tuples, or nullptr when it cannot be allocated.
-vtkSmartPointer<vtkFloatArray> NewArray(const char* name, int components, vtkIdType tuples)
+// An array of `tuples` tuples in `unit`, or nullptr when it cannot be allocated.
+vtkSmartPointer<vtkFloatArray> NewArray(
+  const char* name, int components, vtkIdType tuples, const char* unit)
 {
   auto array = vtkSmartPointer<vtkFloatArray>::New();
   array->SetName(name);
+  array->GetInformation()->Set(vtkDataArray::UNITS_LABEL(), unit);
   array->SetNumberOfComponents(components);
   if (!array->Allocate(components * tuples))
   {
@@ -221,6 +226,7 @@ bool MakeGrid(vtkImageData* image, vtkDataArray* heights, const int extent[6], c
   grid.Dx = std::abs(image->GetSpacing()[0]);
   grid.Dy = std::abs(image->GetSpacing()[1]);
   grid.Sectors = settings.Sectors;
+  grid.SectorRotation = vtkMath::RadiansFromDegrees(settings.SectorRotation);
   grid.MaximumDistance = settings.MaximumDistance;
   const vtkIdType local[4] = { extent[0] - window[0], extent[1] - window[0], extent[2] - window[2],
     extent[3] - window[2] };
@@ -232,11 +238,11 @@ bool MakeGrid(vtkImageData* image, vtkDataArray* heights, const int extent[6], c
 
 // A sector's component name: "Az" and the azimuth of its middle in degrees, counter-clockwise
 // from the grid's i axis (east on a north-up DEM), as GeoTIFF band names show it.
-std::string SectorName(int k, int sectors)
+std::string SectorName(int k, int sectors, double rotation)
 {
   std::ostringstream name;
   name.imbue(std::locale::classic());
-  name << "Az" << std::setprecision(6) << 360.0 * (k + 0.5) / sectors;
+  name << "Az" << std::setprecision(6) << vtkHorizonLighting::SectorAzimuth(k, sectors, rotation);
   return name.str();
 }
 
@@ -244,25 +250,34 @@ std::string SectorName(int k, int sectors)
 struct Results
 {
   vtkSmartPointer<vtkFloatArray> Bent, Radius, Normals, Occlusion, Horizons;
+  vtkSmartPointer<vtkFloatArray> Products[4]; // sky-view factors, openness
   vtkNew<vtkUnsignedCharArray> Mask;
 
   bool Allocate(const vtkHorizonHeightField::Settings& settings, vtkIdType texels)
   {
-    this->Bent = NewArray(settings.BentNormalName, 3, texels);
-    this->Radius = NewArray(settings.RadiusName, 1, texels);
-    this->Normals = NewArray("Normals", 3, texels);
-    this->Occlusion =
-      settings.AmbientOcclusion ? NewArray(settings.OcclusionName, 1, texels) : nullptr;
-    this->Horizons =
-      settings.Horizons ? NewArray(settings.HorizonName, settings.Sectors, texels) : nullptr;
+    this->Bent = NewArray(settings.BentNormalName, 3, texels, "1");
+    this->Radius = NewArray(settings.RadiusName, 1, texels, "radian");
+    this->Normals = NewArray("Normals", 3, texels, "1");
+    bool allocated = this->Bent && this->Radius && this->Normals;
+    auto optional = [&](bool wanted, const char* name, int components, const char* unit)
+    {
+      auto array = wanted ? NewArray(name, components, texels, unit) : nullptr;
+      allocated = allocated && (!wanted || array);
+      return array;
+    };
+    this->Occlusion = optional(settings.AmbientOcclusion, settings.OcclusionName, 1, "1");
+    this->Horizons = optional(settings.Horizons, settings.HorizonName, settings.Sectors, "radian");
+    this->Products[0] = optional(settings.SkyViewFactor, "SkyViewFactor", 1, "1");
+    this->Products[1] = optional(settings.SkyViewFactorCosine, "SkyViewFactorCosine", 1, "1");
+    this->Products[2] = optional(settings.PositiveOpenness, "PositiveOpenness", 1, "degree");
+    this->Products[3] = optional(settings.NegativeOpenness, "NegativeOpenness", 1, "degree");
     for (int k = 0; this->Horizons && k < settings.Sectors; ++k)
     {
-      this->Horizons->SetComponentName(k, SectorName(k, settings.Sectors).c_str());
+      this->Horizons->SetComponentName(
+        k, SectorName(k, settings.Sectors, settings.SectorRotation).c_str());
     }
     this->Mask->SetName(vtkApertureValidMask::Name());
-    if (!this->Bent || !this->Radius || !this->Normals ||
-      (settings.AmbientOcclusion && !this->Occlusion) || (settings.Horizons && !this->Horizons) ||
-      !this->Mask->Allocate(texels))
+    if (!allocated || !this->Mask->Allocate(texels))
     {
       return false;
     }
@@ -272,9 +287,15 @@ struct Results
 
   vtkHorizonApertures::Buffers Buffers() const
   {
-    return { this->Bent->GetPointer(0), this->Radius->GetPointer(0),
-      this->Occlusion ? this->Occlusion->GetPointer(0) : nullptr, this->Normals->GetPointer(0),
-      this->Mask->GetPointer(0), this->Horizons ? this->Horizons->GetPointer(0) : nullptr };
+    auto pointer = [](vtkFloatArray* a) { return a ? a->GetPointer(0) : nullptr; };
+    vtkHorizonApertures::Buffers buffers{ pointer(this->Bent), pointer(this->Radius),
+      pointer(this->Occlusion), pointer(this->Normals), this->Mask->GetPointer(0),
+      pointer(this->Horizons) };
+    buffers.SkyViewFactor = pointer(this->Products[0]);
+    buffers.SkyViewFactorCosine = pointer(this->Products[1]);
+    buffers.PositiveOpenness = pointer(this->Products[2]);
+    buffers.NegativeOpenness = pointer(this->Products[3]);
+    return buffers;
   }
 
   // Directions to world coordinates, arrays into `output`; returns the no-data texels.
@@ -292,6 +313,13 @@ struct Results
     if (this->Horizons)
     {
       output->AddArray(this->Horizons);
+    }
+    for (const auto& product : this->Products)
+    {
+      if (product)
+      {
+        output->AddArray(product);
+      }
     }
     if (!output->GetNormals())
     {

@@ -45,6 +45,12 @@ public:
     double MaximumDistance = VTK_DOUBLE_MAX;
     bool AmbientOcclusion = false;
     bool Horizons = false;
+    bool SkyViewFactor = false;       ///< "SkyViewFactor"
+    bool SkyViewFactorCosine = false; ///< "SkyViewFactorCosine"
+    bool PositiveOpenness = false;    ///< "PositiveOpenness"
+    bool NegativeOpenness = false;    ///< "NegativeOpenness"
+    /// Degrees counter-clockwise from the grid's i axis where sector 0 starts.
+    double SectorRotation = 0.0;
     const char* BentNormalName = "BentNormal";
     const char* RadiusName = "ApertureRadius";
     const char* OcclusionName = "AmbientOcclusion";
@@ -54,10 +60,11 @@ public:
   /**
    * Computes the apertures of `extent` (within the image's extent, whose texels occlude) and adds
    * them to `output` (the point data of a grid of that extent): the bent normals, radii, ambient
-   * occlusion and horizons (in the grid's frame, Sectors components) if asked, "Normals" (those of
-   * the triangulated surface, which the sweeps use) unless `output` has normals, and, where there
-   * is no-data, the valid mask. `progress` as for vtkHorizonApertures::Compute(). Returns the
-   * number of no-data texels in the extent, or -1 with one sentence in `error`.
+   * occlusion, horizons (in the grid's frame, Sectors components named by their middle azimuths)
+   * and terrain products if asked, each with its unit (vtkDataArray::UNITS_LABEL()), "Normals"
+   * (those of the triangulated surface, which the sweeps use) unless `output` has normals, and,
+   * where there is no-data, the valid mask. `progress` as for vtkHorizonApertures::Compute().
+   * Returns the number of no-data texels in the extent, or -1 with one sentence in `error`.
    */
   static vtkIdType Compute(vtkImageData* image, vtkDataArray* heights, const int extent[6],
     const Settings& settings, vtkPointData* output, std::string& error,

@@ -13,10 +13,11 @@
 //
 //   aperture-precompute DEM.tif -o apertures.tif [--max-distance M] [--sectors D] ...
 //
-// Exit status: 0 on success, 1 when the input cannot be used or the output cannot be written,
-// 2 for a bad command line. Every failure is one line on stderr.
+// Options in PrecomputeOptions.cxx. Exit status: 0 on success, 1 when the input cannot be used or
+// the output cannot be written, 2 for a bad command line. Every failure is one line on stderr.
 
 #include "ApertureRenderMessages.h"
+#include "PrecomputeOptions.h"
 
 #include "vtkAperturePrecompute.h"
 #include "vtkApertureText.h"
@@ -32,145 +33,134 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <iomanip>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace
 {
-const char* const Usage = R"(usage: aperture-precompute DEM -o OUTPUT.tif [options]
+using namespace AperturePrecompute;
 
-Computes the visibility caps (bent normal, aperture radius, ambient occlusion) of every texel of
-a single-band DEM (GeoTIFF, or any raster GDAL reads) by horizon sweeps and writes them as a
-Float32 GeoTIFF with the DEM's georeferencing: bands BentNormal_X/_Y/_Z, ApertureRadius,
-AmbientOcclusion, and with --horizons one band per sector, HorizonAngles_Az<azimuth>: the
-horizon's elevation in radians above the horizontal plane, -pi/2 where nothing is in range,
-along the sector's middle azimuth in degrees counter-clockwise from east (the DEM's columns).
-No-data texels are NaN.
-
-options:
-  -o, --output FILE      the GeoTIFF to write (required)
-  --max-distance M       limit the horizon search to M metres (default: none, the whole DEM;
-                         also --max-distance none). With a limit the DEM is read and computed
-                         in tiles, in bounded memory
-  --sectors D            azimuth sectors, 4 to 1024 (default 32)
-  --tile-size N          tiles of N x N texels with --max-distance (default 5120)
-  --vertical-scale S     factor from the DEM's height unit to metres (default 1; 0.3048: feet)
-  --horizons             also write each sector's horizon (D bands more)
-  --compress             DEFLATE-compress the output
-  -q, --quiet            no progress bar or summary
-  -h, --help             this text
-
-examples:
-  aperture-precompute N35E138.tif -o apertures.tif
-  aperture-precompute lidar-1m.tif -o apertures.tif --max-distance 500 --sectors 64
-)";
-
-struct Options
+// The decimals of GRASS's step 360/D ("11.25": 2), which its raster names carry.
+int GrassStepDecimals(int sectors)
 {
-  std::string Input, Output;
-  double MaximumDistance = 0.0; // 0: no limit
-  int Sectors = 32;
-  int TileSize = 5120;
-  double VerticalScale = 1.0;
-  bool Compress = false, Quiet = false, Horizons = false;
-};
-
-bool Fail(const std::string& message, int& status, int code)
-{
-  std::cerr << "aperture-precompute: " << vtkApertureText::Line(message) << "\n";
-  status = code;
-  return false;
+  int decimals = 0;
+  for (long long scaled = 360; scaled % sectors != 0; scaled *= 10)
+  {
+    ++decimals;
+  }
+  return decimals;
 }
 
-// A number after `flag`, within [low, high].
-bool Number(const std::vector<std::string>& args, size_t& k, double low, double high, double& value,
-  int& status)
+// r.horizon's name of the raster for direction k: PREFIX_011_25 (integer degrees in three
+// digits, then the step's decimals).
+std::string GrassHorizonName(const std::string& prefix, int k, int sectors)
 {
-  const std::string flag = args[k];
-  if (++k >= args.size())
+  const int decimals = GrassStepDecimals(sectors);
+  long long scale = 1;
+  for (int d = 0; d < decimals; ++d)
   {
-    return Fail(flag + " needs a value", status, 2);
+    scale *= 10;
   }
-  char* end = nullptr;
-  value = std::strtod(args[k].c_str(), &end);
-  if (end == args[k].c_str() || *end || !(value >= low && value <= high))
+  const long long fixed = 360LL * scale * k / sectors; // exact: the step divides 360 × scale
+  std::ostringstream name;
+  name << prefix << "_" << std::setw(3) << std::setfill('0') << fixed / scale;
+  if (decimals > 0)
   {
-    return Fail(flag + " takes a number from " + std::to_string(low) + " to " +
-        std::to_string(high) + ", not " + vtkApertureText::Quote(args[k]),
-      status, 2);
+    name << "_" << std::setw(decimals) << std::setfill('0') << fixed % scale;
   }
-  return true;
+  return name.str();
 }
 
-bool Parse(const std::vector<std::string>& args, Options& o, int& status)
+// The filter for the options' outputs; `convergence` turns the grid's azimuths into true ones.
+void Configure(vtkAperturePrecompute* filter, const Options& o, double convergence)
 {
-  for (size_t k = 0; k < args.size(); ++k)
+  filter->SetMethodToHorizons();
+  filter->SetNumberOfSectors(o.Sectors);
+  filter->SetComputeAmbientOcclusion(o.What.Apertures);
+  filter->SetComputeHorizonAngles(o.What.Horizons);
+  filter->SetComputeSkyViewFactor(o.What.SkyViewFactor);
+  filter->SetComputeSkyViewFactorCosine(o.What.SkyViewFactorCosine);
+  filter->SetComputePositiveOpenness(o.What.PositiveOpenness);
+  filter->SetComputeNegativeOpenness(o.What.NegativeOpenness);
+  if (!o.GrassHorizons.empty()) // r.horizon's true directions 0, 360/D, ... as sector middles
   {
-    const std::string& a = args[k];
-    double v = 0.0;
-    if (a == "-h" || a == "--help")
+    filter->SetSectorRotation(convergence - 180.0 / o.Sectors);
+  }
+  else if (!std::isnan(o.SectorRotation))
+  {
+    filter->SetSectorRotation(o.SectorRotation);
+  }
+  if (o.MaximumDistance > 0.0)
+  {
+    filter->LimitDistanceOn();
+    filter->SetMaximumDistance(o.MaximumDistance);
+  }
+}
+
+// The writer's arrays, in the order of the bands.
+void ChooseArrays(vtkGDALGridWriter* writer, const Outputs& what)
+{
+  const std::pair<bool, const char*> arrays[] = { { what.Apertures, "BentNormal" },
+    { what.Apertures, "ApertureRadius" }, { what.Apertures, "AmbientOcclusion" },
+    { what.SkyViewFactor, "SkyViewFactor" }, { what.SkyViewFactorCosine, "SkyViewFactorCosine" },
+    { what.PositiveOpenness, "PositiveOpenness" }, { what.NegativeOpenness, "NegativeOpenness" },
+    { what.Horizons, "HorizonAngles" } };
+  for (const auto& array : arrays)
+  {
+    if (array.first)
     {
-      std::cout << Usage;
-      status = 0;
+      writer->AddArrayName(array.second);
+    }
+  }
+}
+
+// Copies the horizon bands, the file's last, into r.horizon's rasters; the file names written.
+bool WriteGrassHorizons(
+  vtkGDALGridWriter* writer, const Options& o, std::vector<std::string>& written)
+{
+  const Outputs& w = o.What;
+  const int bands = (w.Apertures ? 5 : 0) + w.SkyViewFactor + w.SkyViewFactorCosine +
+    w.PositiveOpenness + w.NegativeOpenness + o.Sectors;
+  for (int k = 0; k < o.Sectors; ++k)
+  {
+    written.push_back(GrassHorizonName(o.GrassHorizons, k, o.Sectors) + ".tif");
+    if (!writer->WriteBandCopy(bands - o.Sectors + 1 + k, written.back().c_str()))
+    {
       return false;
     }
-    else if (a == "-o" || a == "--output")
-    {
-      if (++k >= args.size())
-      {
-        return Fail(a + " needs a file name", status, 2);
-      }
-      o.Output = args[k];
-    }
-    else if (a == "--max-distance" && k + 1 < args.size() && args[k + 1] == "none")
-    {
-      o.MaximumDistance = 0.0;
-      ++k;
-    }
-    else if (a == "--max-distance" || a == "--vertical-scale")
-    {
-      if (!Number(args, k, 1e-9, 1e12, v, status))
-      {
-        return false;
-      }
-      (a == "--max-distance" ? o.MaximumDistance : o.VerticalScale) = v;
-    }
-    else if (a == "--sectors" || a == "--tile-size")
-    {
-      const bool sectors = a == "--sectors";
-      if (!Number(args, k, sectors ? 4 : 1, sectors ? 1024 : 1e9, v, status))
-      {
-        return false;
-      }
-      (sectors ? o.Sectors : o.TileSize) = static_cast<int>(v);
-    }
-    else if (a == "--compress" || a == "-q" || a == "--quiet" || a == "--horizons")
-    {
-      (a == "--compress" ? o.Compress : a == "--horizons" ? o.Horizons : o.Quiet) = true;
-    }
-    else if (!a.empty() && a[0] == '-')
-    {
-      return Fail("unknown option " + vtkApertureText::Quote(a) + " (see --help)", status, 2);
-    }
-    else if (o.Input.empty())
-    {
-      o.Input = a;
-    }
-    else
-    {
-      return Fail(
-        "one DEM at a time; " + vtkApertureText::QuoteName(a) + " is a second one", status, 2);
-    }
-  }
-  if (o.Input.empty() || o.Output.empty())
-  {
-    return Fail(
-      o.Input.empty() ? "no DEM given (see --help)" : "no output given: -o FILE.tif", status, 2);
   }
   return true;
+}
+
+// What was written, and the warnings on the way.
+void PrintSummary(const Options& o, vtkGDALDEMReader* reader, const int whole[6], double seconds,
+  const std::vector<std::string>& grass, const ApertureRender::MessageCapture& messages)
+{
+  const double* spacing = reader->GetOutput()->GetSpacing();
+  std::cout << "Wrote " << vtkApertureText::QuoteName(o.Output) << ": " << whole[1] + 1 << " x "
+            << whole[3] + 1 << " texels, " << o.Sectors << " sectors, spacing " << spacing[0]
+            << " x " << spacing[1] << " m (" << reader->GetGroundSpacingNote() << "), " << seconds
+            << " s\n";
+  if (!grass.empty())
+  {
+    std::cout << "Wrote " << grass.size() << " horizon rasters for r.sun, "
+              << vtkApertureText::QuoteName(grass.front()) << " to "
+              << vtkApertureText::QuoteName(grass.back())
+              << " (horizon_step=" << std::setprecision(GrassStepDecimals(o.Sectors) + 3)
+              << 360.0 / o.Sectors << "; grid north " << std::setprecision(3)
+              << reader->GetGridConvergence() << " degrees from true north)\n";
+  }
+  for (const auto& warning : messages.Warnings())
+  {
+    std::cout << "note: " << vtkApertureText::Line(warning) << "\n";
+  }
 }
 }
 
@@ -178,7 +168,7 @@ int main(int argc, char* argv[])
 {
   int status = 1;
   Options o;
-  if (!Parse(std::vector<std::string>(argv + 1, argv + argc), o, status))
+  if (!Parse(argc - 1, argv + 1, o, status))
   {
     return status;
   }
@@ -193,15 +183,7 @@ int main(int argc, char* argv[])
   }
   vtkNew<vtkAperturePrecompute> filter;
   filter->SetInputConnection(reader->GetOutputPort());
-  filter->SetMethodToHorizons();
-  filter->SetNumberOfSectors(o.Sectors);
-  filter->ComputeAmbientOcclusionOn();
-  filter->SetComputeHorizonAngles(o.Horizons);
-  if (o.MaximumDistance > 0.0)
-  {
-    filter->LimitDistanceOn();
-    filter->SetMaximumDistance(o.MaximumDistance);
-  }
+  Configure(filter, o, reader->GetGridConvergence());
   // Tiles when the search radius leaves room for them (each tile reads its radius around it).
   int whole[6];
   reader->GetOutputInformation(0)->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
@@ -214,6 +196,8 @@ int main(int argc, char* argv[])
   writer->SetTileRows(tile);
   writer->SetTileColumns(tile);
   writer->SetCompress(o.Compress);
+  writer->SetCloudOptimized(o.CloudOptimized);
+  ChooseArrays(writer, o.What);
 
   const auto start = std::chrono::steady_clock::now();
   int ok = 0;
@@ -224,6 +208,13 @@ int main(int argc, char* argv[])
       o.Quiet ? nullptr : new ApertureRender::ProgressBar(reporter, "Horizons"));
     ok = writer->Write();
   }
+  std::vector<std::string> grass;
+  if (ok && !o.GrassHorizons.empty() && !WriteGrassHorizons(writer, o, grass))
+  {
+    ok = 0; // a run that fails leaves no file behind
+    grass.push_back(o.Output);
+    std::for_each(grass.begin(), grass.end(), [](const std::string& f) { std::remove(f.c_str()); });
+  }
   if (!ok || !messages.FirstError().empty())
   {
     return Fail(messages.FirstErrorOr("cannot write " + vtkApertureText::QuoteName(o.Output)),
@@ -232,18 +223,9 @@ int main(int argc, char* argv[])
   }
   if (!o.Quiet)
   {
-    const int* extent = whole;
     const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::cout << "Wrote " << vtkApertureText::QuoteName(o.Output) << ": " << extent[1] + 1 << " x "
-              << extent[3] + 1 << " texels, " << o.Sectors << " sectors, spacing "
-              << reader->GetOutput()->GetSpacing()[0] << " x "
-              << reader->GetOutput()->GetSpacing()[1] << " m (" << reader->GetGroundSpacingNote()
-              << "), " << seconds << " s\n";
-    for (const auto& warning : messages.Warnings())
-    {
-      std::cout << "note: " << vtkApertureText::Line(warning) << "\n";
-    }
+    PrintSummary(o, reader, whole, seconds, grass, messages);
   }
   return 0;
 }

@@ -107,6 +107,48 @@ bool GroundSpacing(
   return ok && ground[0] > 0.0 && ground[1] > 0.0;
 }
 
+// Degrees counter-clockwise from the grid's north (+y) to true north at the tile's centre (the
+// meridian convergence, with the sign of a rotation of the grid onto the meridians): a point a
+// little north of the centre, through the CRS's geographic base and back. 0 where it cannot be
+// found.
+double Convergence(OGRSpatialReferenceH srs, const double gt[6], const int size[2])
+{
+  const double cx = gt[0] + 0.5 * size[0] * gt[1], cy = gt[3] + 0.5 * size[1] * gt[5];
+  if (!(std::abs(cx) < 1e8 && std::abs(cy) < 1e8))
+  {
+    return 0.0;
+  }
+  OGRSpatialReferenceH geographic = OSRCloneGeogCS(srs);
+  if (!geographic)
+  {
+    return 0.0;
+  }
+  OSRSetAxisMappingStrategy(geographic, OAMS_TRADITIONAL_GIS_ORDER);
+  OSRSetAxisMappingStrategy(srs, OAMS_TRADITIONAL_GIS_ORDER);
+  OGRCoordinateTransformationH to = OCTNewCoordinateTransformation(srs, geographic);
+  OGRCoordinateTransformationH back = OCTNewCoordinateTransformation(geographic, srs);
+  double x[2] = { cx, cx }, y[2] = { cy, cy };
+  bool ok = to && back && OCTTransform(to, 1, x, y, nullptr);
+  if (ok)
+  {
+    y[1] = y[0] + 1e-3 / DegreesPerAngularUnit(geographic); // a thousandth of a degree north
+    x[1] = x[0];
+    x[0] = cx;
+    y[0] = cy;
+    ok = OCTTransform(back, 1, x + 1, y + 1, nullptr);
+  }
+  for (auto* transform : { to, back })
+  {
+    if (transform)
+    {
+      OCTDestroyCoordinateTransformation(transform);
+    }
+  }
+  OSRDestroySpatialReference(geographic);
+  const double east = x[1] - cx, north = y[1] - cy;
+  return ok && (east != 0.0 || north != 0.0) ? std::atan2(-east, north) / DegreesToRadians : 0.0;
+}
+
 vtkNew<vtkDoubleArray> Pair(const char* name, const double values[2])
 {
   vtkNew<vtkDoubleArray> array;
@@ -130,6 +172,7 @@ struct Ground
 {
   double Spacing[2] = { 1.0, 1.0 };
   double Origin[2] = { 0.0, 0.0 };
+  double Convergence = 0.0;
   std::string Note, Warning, Error;
 };
 
@@ -186,6 +229,7 @@ Ground ProjectedGround(OGRSpatialReferenceH srs, const double gt[6], const int s
   }
   ground.Note = srs ? "metres from the projected CRS's pixel size"
                     : "pixel size of the file's geotransform (no CRS: taken as metres)";
+  ground.Convergence = srs ? Convergence(srs, gt, size) : 0.0;
   double metres[2];
   if (srs && GroundSpacing(srs, gt, size, metres) &&
     (std::abs(metres[0] / ground.Spacing[0] - 1.0) > 0.01 ||
@@ -355,6 +399,7 @@ bool vtkGDALDEMReader::FindGroundSpacing(const double gt[6], std::string& error)
   std::copy(ground.Spacing, ground.Spacing + 2, this->Spacing);
   std::copy(ground.Origin, ground.Origin + 2, this->Origin);
   this->GroundSpacingNote = ground.Note;
+  this->GridConvergence = ground.Convergence;
   if (!ground.Warning.empty())
   {
     vtkWarningMacro(<< vtkApertureText::QuoteName(this->FileName) << " " << ground.Warning);
@@ -511,6 +556,7 @@ void vtkGDALDEMReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NorthUp: " << this->NorthUp << "\n";
   os << indent << "Geographic: " << this->Geographic << "\n";
   os << indent << "GroundSpacingNote: " << this->GroundSpacingNote << "\n";
+  os << indent << "GridConvergence: " << this->GridConvergence << "\n";
   os << indent << "SpatialReference: " << (this->SpatialReference.empty() ? "(none)" : "WKT")
      << "\n";
 }

@@ -100,6 +100,15 @@ public:
   vtkGetMacro(Geographic, bool);
   vtkGetMacro(Georeferenced, bool);
 
+  /**
+   * After UpdateInformation(): degrees counter-clockwise from the grid's north (its +y axis) to
+   * true north at the tile's centre, the meridian convergence of a projected CRS (-1.31 for a
+   * UTM 54N tile at 138.7° E, 35.4° N, west of the zone's central meridian). The grid's
+   * directions are azimuths on the grid; tools that take true directions, as GRASS's r.horizon
+   * and r.sun do, need them turned by this much. 0 for a geographic CRS or none.
+   */
+  vtkGetMacro(GridConvergence, double);
+
 protected:
   vtkGDALDEMReader();
   ~vtkGDALDEMReader() override = default;
@@ -132,6 +141,7 @@ private:
   bool Geographic = false;
   bool Georeferenced = false;
   bool NorthUp = true;
+  double GridConvergence = 0.0;
 };
 
 #endif

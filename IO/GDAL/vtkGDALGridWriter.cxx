@@ -35,6 +35,7 @@
 #include <cpl_string.h>
 #include <cpl_vsi.h>
 #include <gdal.h>
+#include <gdal_utils.h>
 
 #include <algorithm>
 #include <cmath>
@@ -80,6 +81,48 @@ struct GeoReference
     gt[5] = -this->Spacing[1];
   }
 };
+
+// A band of the file: its name, and its unit (vtkDataArray::UNITS_LABEL()), or "".
+struct Band
+{
+  std::string Name;
+  std::string Unit;
+};
+
+// Copies the finished GeoTIFF `from` into a cloud-optimised GeoTIFF `to` with overviews, through
+// GDAL's COG driver, and removes `from`; false with `error`, and neither file left, on failure.
+bool CopyCloudOptimized(
+  const std::string& from, const std::string& to, bool compress, std::string& error)
+{
+  vtkGDALSession session;
+  CPLErrorReset();
+  GDALDriverH cog = GDALGetDriverByName("COG");
+  GDALDatasetH source = cog ? GDALOpen(from.c_str(), GA_ReadOnly) : nullptr;
+  char** options = CSLSetNameValue(nullptr, "BIGTIFF", "IF_SAFER");
+  options = CSLSetNameValue(options, "COMPRESS", compress ? "DEFLATE" : "NONE");
+  options = CSLSetNameValue(options, "PREDICTOR", compress ? "YES" : "NO");
+  options = CSLSetNameValue(options, "RESAMPLING", "AVERAGE");
+  GDALDatasetH copy =
+    source ? GDALCreateCopy(cog, to.c_str(), source, FALSE, options, nullptr, nullptr) : nullptr;
+  CSLDestroy(options);
+  if (copy)
+  {
+    GDALClose(copy);
+  }
+  if (source)
+  {
+    GDALClose(source);
+  }
+  VSIUnlink(from.c_str());
+  if (!copy || CPLGetLastErrorType() >= CE_Failure)
+  {
+    error = "cannot write the cloud-optimised " + vtkApertureText::QuoteName(to) + ": " +
+      (cog ? session.LastError() : "this GDAL has no COG driver");
+    VSIUnlink(to.c_str());
+    return false;
+  }
+  return true;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -106,7 +149,7 @@ public:
   vtkFile(const vtkFile&) = delete;
   vtkFile& operator=(const vtkFile&) = delete;
 
-  bool Create(const int whole[6], const std::vector<std::string>& bands, bool compress,
+  bool Create(const int whole[6], const std::vector<Band>& bands, bool compress,
     const GeoReference& geo, std::string& error);
   bool WriteBand(int band, int fileColumn, int fileRow, int nx, int rows, const float* values,
     std::string& error);
@@ -120,7 +163,7 @@ public:
 };
 
 //------------------------------------------------------------------------------
-bool vtkGDALGridWriter::vtkFile::Create(const int whole[6], const std::vector<std::string>& bands,
+bool vtkGDALGridWriter::vtkFile::Create(const int whole[6], const std::vector<Band>& bands,
   bool compress, const GeoReference& geo, std::string& error)
 {
   GDALDriverH driver = GDALGetDriverByName("GTiff");
@@ -157,7 +200,8 @@ bool vtkGDALGridWriter::vtkFile::Create(const int whole[6], const std::vector<st
   for (size_t b = 0; b < bands.size(); ++b)
   {
     GDALRasterBandH band = GDALGetRasterBand(this->Dataset, static_cast<int>(b) + 1);
-    GDALSetDescription(band, bands[b].c_str());
+    GDALSetDescription(band, bands[b].Name.c_str());
+    GDALSetRasterUnitType(band, bands[b].Unit.c_str());
     GDALSetRasterNoDataValue(band, std::numeric_limits<double>::quiet_NaN());
   }
   return true;
@@ -271,7 +315,8 @@ bool vtkGDALGridWriter::ChooseArrays(vtkImageData* image, std::vector<std::strin
   names = this->ArrayNames;
   if (names.empty())
   {
-    for (const char* name : { "BentNormal", "ApertureRadius", "AmbientOcclusion", "HorizonAngles" })
+    for (const char* name : { "BentNormal", "ApertureRadius", "AmbientOcclusion", "HorizonAngles",
+           "SkyViewFactor", "SkyViewFactorCosine", "PositiveOpenness", "NegativeOpenness" })
     {
       if (pd->GetArray(name))
       {
@@ -327,7 +372,9 @@ int vtkGDALGridWriter::Write()
   const int rows = this->TileRows > 0 ? std::min(this->TileRows, ny) : ny;
   const int columns = this->TileColumns > 0 ? std::min(this->TileColumns, nx) : nx;
   const double tiles = std::ceil(double(ny) / rows) * std::ceil(double(nx) / columns);
-  vtkFile file(this->FileName);
+  // A cloud-optimised file is copied from a plain one written beside it.
+  const std::string plain = this->CloudOptimized ? this->FileName + ".writing.tif" : this->FileName;
+  vtkFile file(plain);
   std::vector<std::string> arrays;
   std::vector<float> buffer;
   int done = 0;
@@ -349,7 +396,8 @@ int vtkGDALGridWriter::Write()
     }
   }
   std::string error;
-  if (!file.Flush(true, error))
+  if (!file.Flush(true, error) ||
+    (this->CloudOptimized && !CopyCloudOptimized(plain, this->FileName, this->Compress, error)))
   {
     vtkErrorMacro(<< error);
     return 0;
@@ -366,20 +414,24 @@ bool vtkGDALGridWriter::CreateFile(
   {
     return false;
   }
-  std::vector<std::string> bands;
+  std::vector<Band> bands;
   static const char* const axes[] = { "_X", "_Y", "_Z" };
   for (const auto& name : arrays)
   {
     vtkDataArray* array = image->GetPointData()->GetArray(name.c_str());
+    vtkInformation* info = array->GetInformation();
+    const char* unit =
+      info->Has(vtkDataArray::UNITS_LABEL()) ? info->Get(vtkDataArray::UNITS_LABEL()) : "";
     const int components = array->GetNumberOfComponents();
     for (int c = 0; c < components; ++c)
     {
       const char* given = array->GetComponentName(c);
-      bands.push_back(components == 1 ? name
-                                      : name +
+      bands.push_back({ components == 1 ? name
+                                        : name +
             (given      ? "_" + std::string(given)
                 : c < 3 ? axes[c]
-                        : "_" + std::to_string(c)));
+                        : "_" + std::to_string(c)),
+        unit });
     }
   }
   std::string error;
@@ -504,6 +556,53 @@ bool vtkGDALGridWriter::WriteTile(vtkFile& file, vtkImageData* image, const int 
 }
 
 //------------------------------------------------------------------------------
+int vtkGDALGridWriter::WriteBandCopy(int band, const char* fileName)
+{
+  vtkGDALSession session;
+  const std::string to = fileName ? fileName : "";
+  GDALDatasetH source = GDALOpen(this->FileName.c_str(), GA_ReadOnly);
+  if (!source || band < 1 || band > GDALGetRasterCount(source) || to.empty())
+  {
+    vtkErrorMacro("Cannot copy band " << band << " of "
+                                      << vtkApertureText::QuoteName(this->FileName)
+                                      << (source ? ": no such band or no file name." : ": ")
+                                      << (source ? "" : session.LastError()));
+    if (source)
+    {
+      GDALClose(source);
+    }
+    return 0;
+  }
+  const std::string arguments[] = { "-of", "GTiff", "-b", std::to_string(band), "-co", "TILED=YES",
+    "-co", this->Compress ? "COMPRESS=DEFLATE" : "COMPRESS=NONE" };
+  std::vector<char*> argv;
+  for (const auto& argument : arguments)
+  {
+    argv.push_back(const_cast<char*>(argument.c_str()));
+  }
+  argv.push_back(nullptr);
+  GDALTranslateOptions* options = GDALTranslateOptionsNew(argv.data(), nullptr);
+  CPLErrorReset();
+  GDALDatasetH copy = GDALTranslate(to.c_str(), source, options, nullptr);
+  GDALTranslateOptionsFree(options);
+  if (copy)
+  {
+    GDALRasterBandH from = GDALGetRasterBand(source, band), into = GDALGetRasterBand(copy, 1);
+    GDALSetDescription(into, GDALGetDescription(from));
+    GDALSetRasterUnitType(into, GDALGetRasterUnitType(from));
+    GDALClose(copy);
+  }
+  GDALClose(source);
+  if (!copy || CPLGetLastErrorType() >= CE_Failure)
+  {
+    vtkErrorMacro("Cannot write " << vtkApertureText::QuoteName(to) << ": " << session.LastError());
+    VSIUnlink(to.c_str());
+    return 0;
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
 void vtkGDALGridWriter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
@@ -517,4 +616,5 @@ void vtkGDALGridWriter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TileRows: " << this->TileRows << "\n";
   os << indent << "TileColumns: " << this->TileColumns << "\n";
   os << indent << "Compress: " << this->Compress << "\n";
+  os << indent << "CloudOptimized: " << this->CloudOptimized << "\n";
 }

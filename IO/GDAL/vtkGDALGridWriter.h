@@ -14,9 +14,11 @@
  *
  * Each component of each chosen point array becomes one Float32 band, named after the array
  * (`ApertureRadius`; `BentNormal_X`, `_Y`, `_Z` for vectors; the array's component names where it
- * has them, as the horizons' `HorizonAngles_Az5.625`, ... do). By default the arrays are those
- * vtkAperturePrecompute writes (BentNormal, ApertureRadius, AmbientOcclusion, HorizonAngles) that
- * the input has, or else its scalars; AddArrayName() chooses others.
+ * has them, as the horizons' `HorizonAngles_Az5.625`, ... do), its unit that of the array
+ * (vtkDataArray::UNITS_LABEL(), as vtkAperturePrecompute sets it: `radian`, `degree`, `1`). By
+ * default the arrays are those vtkAperturePrecompute writes (BentNormal, ApertureRadius,
+ * AmbientOcclusion, HorizonAngles, SkyViewFactor, SkyViewFactorCosine, PositiveOpenness,
+ * NegativeOpenness) that the input has, or else its scalars; AddArrayName() chooses others.
  *
  * **Georeferencing.** When the input carries vtkGDALDEMReader's field data (`GeoOrigin`,
  * `GeoSpacing`, `SpatialReference`), the file gets the DEM's CRS and a geotransform that puts every
@@ -96,10 +98,30 @@ public:
   vtkBooleanMacro(Compress, bool);
   ///@}
 
+  ///@{
+  /**
+   * Write a cloud-optimised GeoTIFF (GDAL's COG driver: 512² blocks in the order HTTP range
+   * reads want, overviews averaged down to one block, DEFLATE with a predictor when Compress is
+   * on). The tiles go first to a plain GeoTIFF beside FileName (`FileName.writing.tif`), which
+   * is copied and removed, so that the disk needs room for both while it is written. Default off.
+   */
+  vtkSetMacro(CloudOptimized, bool);
+  vtkGetMacro(CloudOptimized, bool);
+  vtkBooleanMacro(CloudOptimized, bool);
+  ///@}
+
   /**
    * Writes the file. Returns 1 on success, 0 after an error.
    */
   int Write();
+
+  /**
+   * Copies band `band` (from 1) of the written file into a single-band GeoTIFF of its own
+   * (tiled, DEFLATE-compressed when Compress is on), with the file's georeferencing and the
+   * band's name, unit and no-data value: GRASS's r.sun, for one, reads a horizon per file.
+   * Returns 1 on success, 0 after an error (no file left behind).
+   */
+  int WriteBandCopy(int band, const char* fileName);
 
 protected:
   vtkGDALGridWriter();
@@ -112,6 +134,7 @@ protected:
   int TileRows = 1024;
   int TileColumns = 0;
   bool Compress = false;
+  bool CloudOptimized = false;
 
 private:
   vtkGDALGridWriter(const vtkGDALGridWriter&) = delete;

@@ -124,6 +124,46 @@ if horizons:
               for b in horizons["bands"][5:]),  # gdalinfo prints 3 decimals
           "--horizons: angles within [-pi/2, pi/2]")
 
+# --outputs: the terrain products, in a fixed order, each with its unit; the apertures only when
+# named; NaN at no-data; values in their ranges.
+result = run(dem, "-o", path("products.tif"), "--sectors", "16", "--quiet",
+             "--outputs", "openness,svf-cosine,svf")
+products = gdalinfo(path("products.tif"), "-stats")
+check(result.returncode == 0 and products is not None, "--outputs: exit 0")
+if products:
+    bands = [(b.get("description"), b.get("unit")) for b in products["bands"]]
+    check(bands == [("SkyViewFactor", "1"), ("SkyViewFactorCosine", "1"),
+                    ("PositiveOpenness", "degree"), ("NegativeOpenness", "degree")],
+          "--outputs: bands and units " + str(bands))
+    low = [b["minimum"] for b in products["bands"]]
+    high = [b["maximum"] for b in products["bands"]]
+    check(0.0 <= min(low[:2]) and max(high[:2]) <= 1.0, f"sky-view factors in [0, 1]: {low} {high}")
+    check(0.0 < min(low[2:]) and max(high[2:]) < 180.0, f"openness in (0, 180): {low} {high}")
+    valid = float(products["bands"][0]["metadata"][""]["STATISTICS_VALID_PERCENT"])
+    check(abs(valid - 100 * (1 - 24 / 128 ** 2)) < 0.006, f"products NaN at no-data: {valid}%")
+
+# --cog: a cloud-optimised GeoTIFF with overviews, the same values, no temporary file left.
+result = run(dem, "-o", path("cog.tif"), "--sectors", "16", "--quiet", "--cog", "--compress")
+cog = gdalinfo(path("cog.tif"), "-checksum")
+check(result.returncode == 0 and cog is not None and
+      cog.get("metadata", {}).get("IMAGE_STRUCTURE", {}).get("LAYOUT") == "COG",
+      "--cog: layout COG")
+check(cog is not None and [b.get("checksum") for b in cog["bands"]] == whole_sums,
+      "--cog: the bands of the plain file")
+check(not any(n.endswith(".writing.tif") for n in os.listdir(WORK)), "--cog: no file left over")
+
+# --grass-horizons: one raster per direction, named as r.horizon names them (step 22.5: one
+# decimal), each direction's horizon in radians.
+result = run(dem, "-o", path("grass.tif"), "--sectors", "16", "--quiet",
+             "--grass-horizons", path("hz"))
+names = sorted(n for n in os.listdir(WORK) if n.startswith("hz_"))
+want = sorted(f"hz_{int(22.5 * k):03d}_{int(225 * k) % 10}.tif" for k in range(16))
+check(result.returncode == 0 and names == want, "--grass-horizons: r.horizon's names " +
+      str(names[:3]))
+east = gdalinfo(path("hz_000_0.tif"), "-stats")
+check(east is not None and len(east["bands"]) == 1 and east["bands"][0].get("unit") == "radian"
+      and -math.pi / 2 - 1e-3 <= east["bands"][0]["minimum"], "--grass-horizons: one band, radians")
+
 # Progress and summary on a normal run.
 result = run(dem, "-o", path("summary.tif"), "--sectors", "8")
 check(result.returncode == 0 and "128 x 128 texels" in result.stdout and "spacing 120" in
@@ -144,6 +184,11 @@ cases = [
     ([dem, "-o", path("x.tif"), "--sectors"], 2),
     ([dem, "-o", path("x.tif"), "--frobnicate"], 2),
     ([dem, dem, "-o", path("x.tif")], 2),
+    ([dem, "-o", path("x.tif"), "--outputs", "svf,shade"], 2),
+    ([dem, "-o", path("x.tif"), "--outputs", ""], 2),
+    ([dem, "-o", path("x.tif"), "--grass-horizons", path("g"), "--sectors", "7"], 2),
+    ([dem, "-o", path("x.tif"), "--grass-horizons", path("g"), "--sector-rotation", "3"], 2),
+    ([dem, "-o", path("x.tif"), "--grass-horizons", path("no-such-folder/g")], 1),
 ]
 for args, status in cases:
     result = run(*args)
