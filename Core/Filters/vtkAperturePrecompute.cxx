@@ -482,6 +482,12 @@ bool vtkAperturePrecompute::vtkRun::ChooseMethod()
       "Sky-view factors and openness come from horizon sweeps of a height field; this update "
       "casts rays, so there are none.");
   }
+  if (self->NoDataAs != NO_DATA_OPEN && !this->Horizons)
+  {
+    vtkWarningWithObjectMacro(this->Self,
+      "No-data as walls or filled applies to horizon sweeps; this update casts rays, where "
+      "no-data stays open.");
+  }
   if (!std::isfinite(self->SectorRotation))
   {
     vtkErrorWithObjectMacro(this->Self, "The sector rotation must be finite.");
@@ -511,6 +517,9 @@ bool vtkAperturePrecompute::vtkRun::SweepHorizons(const int extent[6])
   settings.PositiveOpenness = self->ComputePositiveOpenness;
   settings.NegativeOpenness = self->ComputeNegativeOpenness;
   settings.SectorRotation = self->SectorRotation;
+  settings.NoDataAs = self->NoDataAs;
+  settings.WallHeight = self->NoDataWallHeight;
+  settings.FillDistance = self->NoDataFillDistance;
   settings.BentNormalName = self->BentNormalArrayName.c_str();
   settings.RadiusName = self->ApertureRadiusArrayName.c_str();
   settings.OcclusionName = self->AmbientOcclusionArrayName.c_str();
@@ -713,10 +722,11 @@ void vtkAperturePrecompute::vtkRun::Warn()
 {
   if (this->NoData > 0)
   {
-    vtkWarningWithObjectMacro(this->Self, << this->NoData
-                                          << " texel(s) are no-data (not finite, or masked); "
-                                             "they neither occlude nor receive (vtkValidPointMask "
-                                             "0, closed aperture).");
+    static const char* const treatments[] = { "they neither occlude nor receive",
+      "they occlude as walls but receive nothing", "no valid texel was near enough to fill them" };
+    vtkWarningWithObjectMacro(this->Self,
+      << this->NoData << " texel(s) are no-data (not finite, or masked); "
+      << treatments[this->Self->NoDataAs] << " (vtkValidPointMask 0, closed aperture).");
   }
   vtkIdType nonFinite = 0, undefinedNormals = 0, flipped = 0;
   for (const auto& r : this->Receivers)
@@ -835,7 +845,8 @@ int vtkAperturePrecompute::RequestUpdateExtent(
     return 1;
   }
   const int halo =
-    vtkHorizonHeightField::Halo(this->SearchDistance(), inInfo->Get(vtkDataObject::SPACING()));
+    vtkHorizonHeightField::Halo(this->SearchDistance(), inInfo->Get(vtkDataObject::SPACING()),
+      this->NoDataAs == NO_DATA_FILL ? this->NoDataFillDistance : 0);
   for (int k = 0; k < 6; ++k)
   {
     const bool grows = k < 4 && halo >= 0;
@@ -941,6 +952,10 @@ void vtkAperturePrecompute::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ComputePositiveOpenness: " << this->ComputePositiveOpenness << "\n";
   os << indent << "ComputeNegativeOpenness: " << this->ComputeNegativeOpenness << "\n";
   os << indent << "SectorRotation: " << this->SectorRotation << "\n";
+  static const char* const noData[] = { "Open", "Wall", "Fill" };
+  os << indent << "NoDataAs: " << noData[this->NoDataAs] << "\n";
+  os << indent << "NoDataWallHeight: " << this->NoDataWallHeight << "\n";
+  os << indent << "NoDataFillDistance: " << this->NoDataFillDistance << "\n";
   os << indent << "ComputeVisibilityMask: " << this->ComputeVisibilityMask << "\n";
   os << indent << "VisibilityMaskBits: " << this->VisibilityMaskBits << "\n";
   os << indent << "VisibilityMaskRaysPerCell: " << this->VisibilityMaskRaysPerCell << "\n";

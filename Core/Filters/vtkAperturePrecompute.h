@@ -82,6 +82,7 @@
 #include "vtkApertureLightingCoreModule.h" // For export macro
 #include "vtkPassInputTypeAlgorithm.h"
 
+#include <limits> // For std::numeric_limits
 #include <string> // For std::string
 
 class vtkMultiProcessController;
@@ -236,6 +237,40 @@ public:
    */
   vtkSetMacro(SectorRotation, double);
   vtkGetMacro(SectorRotation, double);
+  ///@}
+
+  enum NoDataTreatments
+  {
+    NO_DATA_OPEN = 0,
+    NO_DATA_WALL = 1,
+    NO_DATA_FILL = 2
+  };
+
+  ///@{
+  /**
+   * What the horizon sweeps make of a height field's no-data texels (not finite, or 0 in
+   * `vtkValidPointMask`). NO_DATA_OPEN (default): they neither occlude nor receive (closed
+   * apertures, NaN products). NO_DATA_WALL: they block like a cliff as high as
+   * NoDataWallHeight (NaN, the default: the highest valid height of the texels swept, which a
+   * tile knows only of itself and its halo: set it, e.g. from vtkGDALDEMReader's
+   * ComputeHeightRange(), when streaming) and still get no output. NO_DATA_FILL: their heights
+   * are interpolated linearly between the nearest valid texels within NoDataFillDistance
+   * texels on both sides along the row, the column and the two diagonals through them, the
+   * lines weighted by 1/span² (planes are filled exactly, where GDAL's FillNodata, inverse
+   * distance weighting, leaves bumps on slopes; one-sided texels by 1/d² where no line has
+   * both), and they get outputs like the others; texels no valid one reaches stay no-data. Tiles
+   * grow their halo by NoDataFillDistance so that they still equal the whole grid. With rays the
+   * filter warns and keeps no-data open.
+   */
+  vtkSetClampMacro(NoDataAs, int, NO_DATA_OPEN, NO_DATA_FILL);
+  vtkGetMacro(NoDataAs, int);
+  void SetNoDataAsToOpen() { this->SetNoDataAs(NO_DATA_OPEN); }
+  void SetNoDataAsToWall() { this->SetNoDataAs(NO_DATA_WALL); }
+  void SetNoDataAsToFill() { this->SetNoDataAs(NO_DATA_FILL); }
+  vtkSetMacro(NoDataWallHeight, double);
+  vtkGetMacro(NoDataWallHeight, double);
+  vtkSetClampMacro(NoDataFillDistance, int, 1, 100000);
+  vtkGetMacro(NoDataFillDistance, int);
   ///@}
 
   ///@{
@@ -420,6 +455,9 @@ protected:
   bool ComputePositiveOpenness = false;
   bool ComputeNegativeOpenness = false;
   double SectorRotation = 0.0;
+  int NoDataAs = NO_DATA_OPEN;
+  double NoDataWallHeight = std::numeric_limits<double>::quiet_NaN();
+  int NoDataFillDistance = 64;
   bool ComputeVisibilityMask = false;
   int VisibilityMaskBits = 256;
   int VisibilityMaskRaysPerCell = 1;

@@ -38,6 +38,7 @@ struct Field
 {
   const float* Heights;
   const unsigned char* Valid;
+  const unsigned char* ReceiveMask;
   vtkIdType Nx, Ny;
   double Spacing[2];
   vtkIdType Extent[4];
@@ -46,6 +47,11 @@ struct Field
   bool IsValid(vtkIdType t) const
   {
     return (!this->Valid || this->Valid[t]) && std::isfinite(this->Heights[t]);
+  }
+
+  bool Receives(vtkIdType t) const
+  {
+    return this->IsValid(t) && (!this->ReceiveMask || this->ReceiveMask[t]);
   }
 
   // The output index of texel (i, j), or -1 outside the output extent.
@@ -88,7 +94,7 @@ bool CheckGrid(const vtkHorizonApertures::Grid& grid, Field& field, std::string&
     error = "The output extent lies outside the grid.";
     return false;
   }
-  field = { grid.Heights, grid.Valid, grid.Nx, grid.Ny, { grid.Dx, grid.Dy },
+  field = { grid.Heights, grid.Valid, grid.Receives, grid.Nx, grid.Ny, { grid.Dx, grid.Dy },
     { 0, grid.Nx - 1, 0, grid.Ny - 1 }, 0, 0 };
   if (!whole)
   {
@@ -147,7 +153,7 @@ void ComputeNormals(const Field& f, float* normals, unsigned char* valid)
         for (vtkIdType i = f.Extent[0]; i <= f.Extent[1]; ++i)
         {
           const vtkIdType t = i + j * f.Nx, o = f.OutputIndex(i, j);
-          valid[o] = f.IsValid(t) ? 1 : 0;
+          valid[o] = f.Receives(t) ? 1 : 0;
           double n[3] = { 0.0, 0.0, 1.0 };
           if (valid[o])
           {

@@ -98,6 +98,9 @@ public:
     const float* Heights = nullptr;
     /// Per texel, 0 for no-data; nullptr: all valid.
     const unsigned char* Valid = nullptr;
+    /// Per texel, 0 for a valid texel that occludes but gets no output (no-data taken as a
+    /// wall): closed, as no-data texels are; nullptr: every valid texel receives.
+    const unsigned char* Receives = nullptr;
     vtkIdType Nx = 0;
     vtkIdType Ny = 0;
     ///@{

@@ -187,11 +187,11 @@ void ToWorld(vtkImageData* image, float* vectors, vtkIdType n)
 
 // The texels the sweeps read for `extent`: grown by the search radius, within the image (which
 // may hold more than the pipeline asked for); false, with `error`, for an extent outside it.
-bool SweepWindow(vtkImageData* image, const int extent[6], double maximumDistance, int window[4],
-  std::string& error)
+bool SweepWindow(vtkImageData* image, const int extent[6], double maximumDistance, int fill,
+  int window[4], std::string& error)
 {
   const int* whole = image->GetExtent();
-  const int halo = vtkHorizonHeightField::Halo(maximumDistance, image->GetSpacing());
+  const int halo = vtkHorizonHeightField::Halo(maximumDistance, image->GetSpacing(), fill);
   for (int k = 0; k < 4; ++k)
   {
     const int grown = k % 2 ? extent[k] + halo : extent[k] - halo;
@@ -206,16 +206,125 @@ bool SweepWindow(vtkImageData* image, const int extent[6], double maximumDistanc
   return true;
 }
 
-// The sweeps' grid of `window` (heights in `z`, no-data in `valid`), computing `extent`.
+// Copies of the window's heights and masks, where the sweeps need them.
+struct Storage
+{
+  std::vector<float> Z;
+  std::vector<unsigned char> Valid, Receives;
+};
+
+// The nearest valid texel from t along (di, dj) within `distance` steps: its height and steps;
+// false without one.
+bool NearestValid(const std::vector<float>& z, const std::vector<unsigned char>& valid,
+  vtkIdType nx, vtkIdType ny, vtkIdType t, const int way[2], int distance, double& height,
+  int& steps)
+{
+  const vtkIdType i = t % nx, j = t / nx;
+  for (steps = 1; steps <= distance; ++steps)
+  {
+    const vtkIdType a = i + steps * way[0], b = j + steps * way[1];
+    if (a < 0 || a >= nx || b < 0 || b >= ny)
+    {
+      return false;
+    }
+    if (valid[a + b * nx])
+    {
+      height = z[a + b * nx];
+      return true;
+    }
+  }
+  return false;
+}
+
+// A height for no-data texel t from the valid texels within `distance` steps along the four
+// grid lines through it (rows, columns, diagonals): on each line with a valid texel on both
+// sides, the linear interpolation between them (exact on planes), weighted by 1/span²; with
+// none, the one-sided nearest texels weighted by 1/d². NaN where no valid texel is in reach.
+double FillValue(const std::vector<float>& z, const std::vector<unsigned char>& valid, vtkIdType nx,
+  vtkIdType ny, vtkIdType t, int distance)
+{
+  static const int lines[4][2] = { { 1, 0 }, { 0, 1 }, { 1, 1 }, { 1, -1 } };
+  double sums[2] = { 0.0, 0.0 }, weights[2] = { 0.0, 0.0 }; // two-sided, one-sided
+  for (const auto& line : lines)
+  {
+    const int back[2] = { -line[0], -line[1] };
+    const double length = std::sqrt(double(line[0] * line[0] + line[1] * line[1]));
+    double h[2];
+    int d[2];
+    const bool found[2] = { NearestValid(z, valid, nx, ny, t, line, distance, h[0], d[0]),
+      NearestValid(z, valid, nx, ny, t, back, distance, h[1], d[1]) };
+    if (found[0] && found[1])
+    {
+      const double w = 1.0 / (length * length * (d[0] + d[1]) * (d[0] + d[1]));
+      sums[0] += w * (h[0] * d[1] + h[1] * d[0]) / (d[0] + d[1]);
+      weights[0] += w;
+    }
+    for (int k = 0; k < 2; ++k)
+    {
+      const double w = found[k] ? 1.0 / (length * length * d[k] * d[k]) : 0.0;
+      sums[1] += w * (found[k] ? h[k] : 0.0);
+      weights[1] += w;
+    }
+  }
+  const int use = weights[0] > 0.0 ? 0 : 1;
+  return weights[use] > 0.0 ? sums[use] / weights[use] : std::numeric_limits<double>::quiet_NaN();
+}
+
+// No-data as the settings take it (see Settings::NoDataAs), on copies of the window's heights
+// and masks: walls are valid texels that do not receive; filled texels valid ones.
+void TreatNoData(
+  const vtkHorizonHeightField::Settings& settings, Storage& s, vtkHorizonApertures::Grid& grid)
+{
+  const vtkIdType n = grid.Nx * grid.Ny;
+  std::vector<unsigned char> valid(n);
+  double highest = -std::numeric_limits<double>::infinity();
+  for (vtkIdType t = 0; t < n; ++t)
+  {
+    valid[t] = (!grid.Valid || grid.Valid[t]) && std::isfinite(grid.Heights[t]);
+    highest = valid[t] ? std::max(highest, double(grid.Heights[t])) : highest;
+  }
+  if (settings.NoDataAs == 0 || std::count(valid.begin(), valid.end(), 0) == 0)
+  {
+    return;
+  }
+  if (grid.Heights != s.Z.data())
+  {
+    s.Z.assign(grid.Heights, grid.Heights + n);
+  }
+  const double wall = std::isfinite(settings.WallHeight) ? settings.WallHeight : highest;
+  vtkSMPTools::For(0, n,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType t = first; t < last; ++t)
+      {
+        s.Z[t] = valid[t] ? s.Z[t]
+          : settings.NoDataAs == 1
+          ? static_cast<float>(wall)
+          : static_cast<float>(FillValue(s.Z, valid, grid.Nx, grid.Ny, t, settings.FillDistance));
+      }
+    });
+  s.Valid.assign(n, 1);
+  for (vtkIdType t = 0; t < n; ++t)
+  {
+    s.Valid[t] = std::isfinite(s.Z[t]) ? 1 : 0; // a fill can leave holes wider than its reach
+  }
+  s.Receives = settings.NoDataAs == 1 ? valid : s.Valid;
+  grid.Heights = s.Z.data();
+  grid.Valid = s.Valid.data();
+  grid.Receives = s.Receives.data();
+}
+
+// The sweeps' grid of `window` (copies in `storage` where needed), computing `extent`.
 bool MakeGrid(vtkImageData* image, vtkDataArray* heights, const int extent[6], const int window[4],
-  const vtkHorizonHeightField::Settings& settings, std::vector<float>& z,
-  std::vector<unsigned char>& valid, vtkHorizonApertures::Grid& grid, std::string& error)
+  const vtkHorizonHeightField::Settings& settings, Storage& storage,
+  vtkHorizonApertures::Grid& grid, std::string& error)
 {
   grid.Nx = window[1] - window[0] + 1;
   grid.Ny = window[3] - window[2] + 1;
   try
   {
-    WindowHeights(image, heights, settings.HeightScale, window, z, valid, grid);
+    WindowHeights(image, heights, settings.HeightScale, window, storage.Z, storage.Valid, grid);
+    TreatNoData(settings, storage, grid);
   }
   catch (const std::bad_alloc&)
   {
@@ -327,7 +436,7 @@ struct Results
     }
     const unsigned char* mask = this->Mask->GetPointer(0);
     const vtkIdType noData = texels - std::count(mask, mask + texels, 1);
-    if (noData > 0)
+    if (noData > 0 || output->GetArray(vtkApertureValidMask::Name())) // a filled input's holes
     {
       output->AddArray(this->Mask);
     }
@@ -342,12 +451,12 @@ vtkIdType vtkHorizonHeightField::Compute(vtkImageData* image, vtkDataArray* heig
   const std::function<bool(double fraction)>& progress)
 {
   int window[4];
-  std::vector<float> z;
-  std::vector<unsigned char> valid;
+  Storage storage;
   vtkHorizonApertures::Grid grid;
   vtkIdType nx = 0, ny = 0;
-  if (!SweepWindow(image, extent, settings.MaximumDistance, window, error) ||
-    !MakeGrid(image, heights, extent, window, settings, z, valid, grid, error) ||
+  const int fill = settings.NoDataAs == 2 ? settings.FillDistance : 0;
+  if (!SweepWindow(image, extent, settings.MaximumDistance, fill, window, error) ||
+    !MakeGrid(image, heights, extent, window, settings, storage, grid, error) ||
     !vtkHorizonApertures::GetOutputSize(grid, nx, ny, error))
   {
     return -1;
@@ -367,7 +476,7 @@ vtkIdType vtkHorizonHeightField::Compute(vtkImageData* image, vtkDataArray* heig
 }
 
 //------------------------------------------------------------------------------
-int vtkHorizonHeightField::Halo(double maximumDistance, const double spacing[3])
+int vtkHorizonHeightField::Halo(double maximumDistance, const double spacing[3], int fill)
 {
   const double finer = std::min(std::abs(spacing[0]), std::abs(spacing[1]));
   const double texels = maximumDistance / finer;
@@ -375,5 +484,5 @@ int vtkHorizonHeightField::Halo(double maximumDistance, const double spacing[3])
   {
     return -1;
   }
-  return static_cast<int>(std::ceil(texels)) + 2;
+  return static_cast<int>(std::ceil(texels)) + 2 + std::max(fill, 0);
 }

@@ -28,6 +28,7 @@
 #include "vtkType.h"
 
 #include <functional>
+#include <limits>
 #include <string>
 
 class vtkDataArray;
@@ -51,6 +52,13 @@ public:
     bool NegativeOpenness = false;    ///< "NegativeOpenness"
     /// Degrees counter-clockwise from the grid's i axis where sector 0 starts.
     double SectorRotation = 0.0;
+    /// No-data texels: 0 open (neither occlude nor receive), 1 walls of WallHeight (NaN: the
+    /// highest valid height of the window swept) that occlude but get no output, 2 filled from
+    /// the valid texels within FillDistance texels (vtkAperturePrecompute::SetNoDataAs()), then
+    /// computed as the others.
+    int NoDataAs = 0;
+    double WallHeight = std::numeric_limits<double>::quiet_NaN();
+    int FillDistance = 64;
     const char* BentNormalName = "BentNormal";
     const char* RadiusName = "ApertureRadius";
     const char* OcclusionName = "AmbientOcclusion";
@@ -72,10 +80,10 @@ public:
 
   /**
    * Texels of halo that a tile needs around it so that its apertures equal the whole grid's:
-   * the search radius in texels of the finer spacing, and 2 for the interpolation; -1 without a
-   * radius (the whole grid).
+   * the search radius in texels of the finer spacing, 2 for the interpolation, and `fill` more
+   * when no-data is filled from that far; -1 without a radius (the whole grid).
    */
-  static int Halo(double maximumDistance, const double spacing[3]);
+  static int Halo(double maximumDistance, const double spacing[3], int fill = 0);
 };
 
 #endif

@@ -60,6 +60,12 @@ options:
                          the middles on the axes, as SAGA's directions are
   --tile-size N          tiles of N x N texels with --max-distance (default 5120)
   --vertical-scale S     factor from the DEM's height unit to metres (default 1; 0.3048: feet)
+  --nodata-as MODE       what no-data texels are (they get NaN, unless filled):
+                           open  neither occlude nor receive (default)
+                           wall  block like a cliff as high as the DEM's highest texel
+                           fill  heights interpolated between the valid texels within 64
+                                 texels along rows, columns and diagonals, then computed
+                                 like the others
   --compress             DEFLATE-compress the output
   --cog                  write a cloud-optimised GeoTIFF with overviews
   -q, --quiet            no progress bar or summary
@@ -153,6 +159,13 @@ bool ParseValue(const std::vector<std::string>& args, size_t& k, Options& o, int
   {
     ok = Number(args, k, 1e-9, 1e12, v, status);
     (a == "--max-distance" ? o.MaximumDistance : o.VerticalScale) = v;
+  }
+  else if (a == "--nodata-as")
+  {
+    const std::string mode = ++k < args.size() ? args[k] : "";
+    o.NoDataAs = mode == "open" ? 0 : mode == "wall" ? 1 : mode == "fill" ? 2 : -1;
+    ok = o.NoDataAs >= 0 ||
+      Fail("--nodata-as takes open, wall or fill, not " + vtkApertureText::Quote(mode), status, 2);
   }
   else if (a == "--sector-rotation")
   {

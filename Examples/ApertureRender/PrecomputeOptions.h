@@ -40,6 +40,7 @@ struct Options
   Outputs What;
   std::string GrassHorizons;            // prefix of r.sun's horizon rasters; empty: none
   double SectorRotation = std::nan(""); // degrees; NaN: not given
+  int NoDataAs = 0;                     // vtkAperturePrecompute's NoDataAs
 };
 
 // Parses the arguments (without the program's name). False when the program should stop: with

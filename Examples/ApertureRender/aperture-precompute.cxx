@@ -89,6 +89,7 @@ void Configure(vtkAperturePrecompute* filter, const Options& o, double convergen
   filter->SetComputeSkyViewFactorCosine(o.What.SkyViewFactorCosine);
   filter->SetComputePositiveOpenness(o.What.PositiveOpenness);
   filter->SetComputeNegativeOpenness(o.What.NegativeOpenness);
+  filter->SetNoDataAs(o.NoDataAs);
   if (!o.GrassHorizons.empty()) // r.horizon's true directions 0, 360/D, ... as sector middles
   {
     filter->SetSectorRotation(convergence - 180.0 / o.Sectors);
@@ -184,6 +185,15 @@ int main(int argc, char* argv[])
   vtkNew<vtkAperturePrecompute> filter;
   filter->SetInputConnection(reader->GetOutputPort());
   Configure(filter, o, reader->GetGridConvergence());
+  double range[2];
+  if (o.NoDataAs == vtkAperturePrecompute::NO_DATA_WALL) // tiles must agree on the walls' height
+  {
+    if (!reader->ComputeHeightRange(range))
+    {
+      return Fail(messages.FirstErrorOr("cannot read the DEM's heights"), status, 1), status;
+    }
+    filter->SetNoDataWallHeight(range[1]);
+  }
   // Tiles when the search radius leaves room for them (each tile reads its radius around it).
   int whole[6];
   reader->GetOutputInformation(0)->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);

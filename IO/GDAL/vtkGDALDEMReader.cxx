@@ -542,6 +542,33 @@ bool vtkGDALDEMReader::MaskNoData(vtkRaster& raster, vtkImageData* output)
 }
 
 //------------------------------------------------------------------------------
+bool vtkGDALDEMReader::ComputeHeightRange(double range[2])
+{
+  std::string error;
+  vtkRaster raster(this->FileName, error);
+  double minmax[2] = { 0.0, 0.0 };
+  if (error.empty() && GDALComputeRasterMinMax(raster.Band, FALSE, minmax) == CE_None)
+  {
+    int hasScale = 0, hasOffset = 0;
+    const double scale = GDALGetRasterScale(raster.Band, &hasScale) * this->VerticalScale;
+    const double offset = GDALGetRasterOffset(raster.Band, &hasOffset) * this->VerticalScale;
+    for (int k = 0; k < 2; ++k)
+    {
+      range[k] = minmax[k] * scale + offset;
+    }
+    if (range[0] > range[1])
+    {
+      std::swap(range[0], range[1]);
+    }
+    return std::isfinite(range[0]) && std::isfinite(range[1]);
+  }
+  vtkErrorMacro(<< (error.empty() ? "no valid height in " +
+                      vtkApertureText::QuoteName(this->FileName) + ": " + raster.Session.LastError()
+                                  : error));
+  return false;
+}
+
+//------------------------------------------------------------------------------
 void vtkGDALDEMReader::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

@@ -109,6 +109,14 @@ public:
    */
   vtkGetMacro(GridConvergence, double);
 
+  /**
+   * The lowest and highest height of the whole file in metres (scale, offset and VerticalScale
+   * applied; no-data left out), read through once: what a tile cannot know of the others, as
+   * the height of vtkAperturePrecompute's no-data walls. False, after an error, when the file
+   * cannot be read or holds no valid height.
+   */
+  bool ComputeHeightRange(double range[2]);
+
 protected:
   vtkGDALDEMReader();
   ~vtkGDALDEMReader() override = default;

@@ -118,6 +118,23 @@ def main(plugin, data, work):
               f"DEM: the valley floor's aperture {floor:.4f} is pi/2 - atan(slope) = "
               f"{expected:.4f} (+-0.03)")
 
+    # Terrain products on the same valley: the floor of the cone sees the sky above its walls,
+    # 1 - sin(atan(0.3)) of it, and its positive openness is 90 degrees less the walls' angle.
+    products = pvs.AperturePrecompute(Input=dem, ComputeSkyViewFactor=1,
+                                      ComputePositiveOpenness=1, NoDataAs="Fill")
+    svf = point_array(products, "SkyViewFactor")
+    openness = point_array(products, "PositiveOpenness")
+    heights = point_array(products, "Elevation")
+    if svf is not None and openness is not None and heights is not None:
+        wall = math.atan(0.3)
+        apex = int(np.argmin(heights))
+        floor = (svf[apex], openness[apex])
+        check(abs(floor[0] - (1 - math.sin(wall))) < 0.01 and
+              abs(floor[1] - (90 - math.degrees(wall))) < 0.5,
+              f"DEM: the floor's sky-view factor {floor[0]:.4f} and openness {floor[1]:.2f}")
+    else:
+        check(False, "DEM: SkyViewFactor and PositiveOpenness computed")
+
     # Limit Distance: off by default (every occluder counts); the distance it offers is a
     # quarter of the data's size, not 1e30; on, with a radius shorter than a texel (10 m), the
     # valley floor sees no wall.

@@ -24,14 +24,26 @@
 //   the sector turned onto the wall's normal (SectorRotation) equal to atan(H / d);
 // - tolerances: 0.5% for the sky-view factors, 0.2° for openness and horizons;
 // - edges see fewer sectors (openness over those with samples); no-data texels are NaN; a tile
-//   with its halo gives the whole grid's products.
+//   with its halo gives the whole grid's products;
+// - vtkAperturePrecompute's no-data as walls: a block of no-data 20 texels away, as a wall of
+//   30, gives the horizon atan(30/20) and stays no-data; filled: a square hole in a tilted plane
+//   is filled so that its centre sees the plane's (1 + cos s)/2, no hole is left, and a tile
+//   (its halo grown by the fill's reach) equals the whole grid.
 
+#include "vtkAperturePrecompute.h"
 #include "vtkHorizonApertures.h"
 
 #include "vtkApertureTestHarness.h"
 
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
 #include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkSmartPointer.h"
 
+#include <array>
 #include <cmath>
 #include <functional>
 #include <string>
@@ -299,6 +311,92 @@ void TestNoDataAndTiles()
   }
   Check(worst < 1e-5, "a tile's products equal the whole grid's", worst, 0.0);
 }
+
+// A 129² image of unit texels holding the terrain's heights, NaN where `hole` says.
+vtkSmartPointer<vtkImageData> MakeImage(
+  const Terrain& t, const std::function<bool(vtkIdType i, vtkIdType j)>& hole)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(static_cast<int>(t.N), static_cast<int>(t.N), 1);
+  vtkNew<vtkFloatArray> heights;
+  heights->SetName("Elevation");
+  heights->SetNumberOfTuples(t.N * t.N);
+  for (vtkIdType p = 0; p < t.N * t.N; ++p)
+  {
+    heights->SetValue(p, hole(p % t.N, p / t.N) ? vtkMath::Nan() : t.Z[p]);
+  }
+  image->GetPointData()->SetScalars(heights);
+  return image;
+}
+
+double Value(vtkImageData* image, const char* name, int i, int j, int component = 0)
+{
+  int ijk[3] = { i, j, 0 };
+  return image->GetPointData()->GetArray(name)->GetComponent(image->ComputePointId(ijk), component);
+}
+
+void TestNoDataTreatments()
+{
+  const Terrain flat(129, [](double, double) { return 0.0; });
+  vtkNew<vtkAperturePrecompute> walls;
+  walls->SetInputData(MakeImage(
+    flat, [](vtkIdType i, vtkIdType j) { return i >= 84 && i <= 89 && j >= 54 && j <= 74; }));
+  walls->SetNoDataAsToWall();
+  walls->SetNoDataWallHeight(30.0);
+  walls->ComputeHorizonAnglesOn();
+  walls->ComputeSkyViewFactorOn();
+  walls->SetSectorRotation(-180.0 / 32);
+  walls->Update();
+  vtkImageData* out = vtkImageData::SafeDownCast(walls->GetOutputDataObject(0));
+  const double h = Value(out, "HorizonAngles", 64, 64, 0), want = std::atan(30.0 / 20.0);
+  Check(std::abs(h - want) < vtkMath::RadiansFromDegrees(0.2),
+    "walls: atan(30 / 20) toward the "
+    "block",
+    h, want);
+  Check(std::isnan(Value(out, "SkyViewFactor", 86, 60)) &&
+      Value(out, "vtkValidPointMask", 86, 60) == 0.0,
+    "walls: no-data stays no-data");
+
+  const double slope = vtkMath::RadiansFromDegrees(20.0), tilt = std::tan(slope);
+  const Terrain plane(129, [tilt](double x, double) { return tilt * x; });
+  auto square = [](vtkIdType i, vtkIdType j)
+  { return std::abs(i - 64) <= 4 && std::abs(j - 64) <= 4; };
+  vtkNew<vtkAperturePrecompute> filled;
+  filled->SetInputData(MakeImage(plane, square));
+  filled->SetNoDataAsToFill();
+  filled->ComputeSkyViewFactorCosineOn();
+  filled->LimitDistanceOn();
+  filled->SetMaximumDistance(10.0);
+  filled->SetNoDataFillDistance(8);
+  filled->Update();
+  vtkNew<vtkImageData> whole; // the tile below updates the same output
+  whole->DeepCopy(filled->GetOutputDataObject(0));
+  out = whole;
+  const double cosine = Value(out, "SkyViewFactorCosine", 64, 64),
+               sky = 0.5 * (1.0 + std::cos(slope));
+  Check(std::abs(cosine - sky) < 0.005 * sky, "filled: the hole's centre sees the plane's sky",
+    cosine, sky);
+  vtkDataArray* values = out->GetPointData()->GetArray("SkyViewFactorCosine");
+  bool holes = false;
+  for (vtkIdType p = 0; p < values->GetNumberOfTuples(); ++p)
+  {
+    holes = holes || std::isnan(values->GetComponent(p, 0));
+  }
+  Check(!holes, "filled: no hole left");
+  // A tile beside the hole: its halo reaches past the hole by the fill's reach.
+  filled->UpdateExtent(std::array<int, 6>{ 66, 90, 50, 70, 0, 0 }.data());
+  double worst = 0.0;
+  for (int j = 50; j <= 70; ++j)
+  {
+    for (int i = 66; i <= 90; ++i)
+    {
+      auto* tile = vtkImageData::SafeDownCast(filled->GetOutputDataObject(0));
+      const double tiled = Value(tile, "SkyViewFactorCosine", i, j);
+      worst = std::max(worst, std::abs(tiled - Value(out, "SkyViewFactorCosine", i, j)));
+    }
+  }
+  Check(worst < 1e-6, "filled: a tile equals the whole grid", worst, 0.0);
+}
 }
 
 int TestTerrainProducts(int, char*[])
@@ -307,5 +405,6 @@ int TestTerrainProducts(int, char*[])
   TestValleyAndCones();
   TestWall();
   TestNoDataAndTiles();
+  TestNoDataTreatments();
   return vtkApertureTest::Result();
 }

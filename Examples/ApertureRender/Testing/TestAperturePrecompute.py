@@ -142,6 +142,23 @@ if products:
     valid = float(products["bands"][0]["metadata"][""]["STATISTICS_VALID_PERCENT"])
     check(abs(valid - 100 * (1 - 24 / 128 ** 2)) < 0.006, f"products NaN at no-data: {valid}%")
 
+# --nodata-as: walls keep the hole NaN and take sky from around it; a fill leaves no hole.
+open_mean = products["bands"][0]["mean"] if products else None
+for mode, holes in (("wall", 24), ("fill", 0)):
+    name = path(f"nodata-{mode}.tif")
+    result = run(dem, "-o", name, "--sectors", "16", "--quiet", "--nodata-as", mode,
+                 "--outputs", "svf")
+    info = gdalinfo(name, "-stats")
+    check(result.returncode == 0 and info is not None, f"--nodata-as {mode}: exit 0")
+    if info and open_mean is not None:
+        band = info["bands"][0]
+        valid = float(band["metadata"][""]["STATISTICS_VALID_PERCENT"])
+        check(abs(valid - 100 * (1 - holes / 128 ** 2)) < 0.006,
+              f"--nodata-as {mode}: {holes} no-data texels left: {valid}% valid")
+        if mode == "wall":
+            check(band["mean"] < open_mean, f"walls take sky: SVF mean {band['mean']} < "
+                  f"{open_mean}")
+
 # --cog: a cloud-optimised GeoTIFF with overviews, the same values, no temporary file left.
 result = run(dem, "-o", path("cog.tif"), "--sectors", "16", "--quiet", "--cog", "--compress")
 cog = gdalinfo(path("cog.tif"), "-checksum")
@@ -186,6 +203,8 @@ cases = [
     ([dem, dem, "-o", path("x.tif")], 2),
     ([dem, "-o", path("x.tif"), "--outputs", "svf,shade"], 2),
     ([dem, "-o", path("x.tif"), "--outputs", ""], 2),
+    ([dem, "-o", path("x.tif"), "--nodata-as", "lake"], 2),
+    ([dem, "-o", path("x.tif"), "--nodata-as"], 2),
     ([dem, "-o", path("x.tif"), "--grass-horizons", path("g"), "--sectors", "7"], 2),
     ([dem, "-o", path("x.tif"), "--grass-horizons", path("g"), "--sector-rotation", "3"], 2),
     ([dem, "-o", path("x.tif"), "--grass-horizons", path("no-such-folder/g")], 1),
