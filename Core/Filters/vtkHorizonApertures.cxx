@@ -22,6 +22,7 @@
 #include <initializer_list>
 #include <limits>
 #include <memory>
+#include <new>
 #include <vector>
 
 namespace
@@ -994,7 +995,17 @@ bool vtkHorizonApertures::Compute(const Grid& grid, const Buffers& output, std::
   std::fill_n(output.BentNormals, 3 * texels, 0.0f);
   std::fill_n(output.ApertureRadius, texels, 0.0f);
   const bool products = WantsProducts(output);
-  std::vector<unsigned short> sampled(products ? texels : 0, 0);
+  std::vector<unsigned short> sampled;
+  try
+  {
+    sampled.resize(products ? texels : 0, 0);
+  }
+  catch (const std::bad_alloc&)
+  {
+    error = "There is not enough memory to count the sectors of " + std::to_string(texels) +
+      " texels; stream in tiles.";
+    return false;
+  }
   for (float* sum : { output.SkyViewFactor, output.SkyViewFactorCosine, output.PositiveOpenness,
          output.NegativeOpenness })
   {

@@ -164,7 +164,7 @@ def compare(binary, data, work, side, checks):
                  float(np.mean([r for _, r in differences]))))
     rows.append(("horizons vs r.horizon, worst direction (degrees)",
                  max(d for d, _ in differences), min(r for _, r in differences)))
-    sun = rsun(grass, hz, work, side)
+    sun = rsun(grass, hz, work, side) if side <= 1024 else None  # r.sun takes minutes past it
     print("\n### %d x %d (%.2f m texels; grid north %.2f deg from true north)\n"
           % (side, side, 30.0 * 511 / side, convergence(dem)))
     print("| tool | time (s) | ours at 32 sectors is faster by |")
@@ -178,16 +178,18 @@ def compare(binary, data, work, side, checks):
     print("|---|---|---|")
     for name, d, r in rows:
         print("| %s | %.4f | %.4f |" % (name, d, r))
-    print("\nr.sun, day 355 beam irradiance (Wh/m2/day): with our horizons against r.horizon's, "
-          "%.2f%% of cells within 1%% (median difference %.3f%%); r.sun's own shadowing against "
-          "r.horizon's horizons, %.2f%% within 1%%" % sun)
+    if sun is not None:
+        print("\nr.sun, day 355 beam irradiance (Wh/m2/day): with our horizons against "
+              "r.horizon's, %.2f%% of cells within 1%% (median difference %.3f%%); r.sun's own "
+              "shadowing against r.horizon's horizons, %.2f%% within 1%%" % sun)
     # Goals of issue 24 met: the sky-view factors (<= 0.01). Not met: horizons <= 0.5 deg and
     # r.sun 1% on 99% of cells away from the zone's central meridian (docs/terrain.md): this
     # fails if they get worse than measured when that was written (0.65 deg, 82.9%).
     checks += [(rows[0][1] <= 0.01, "cosine SVF vs SAGA SVF: %.4f" % rows[0][1]),
                (rows[1][1] <= 0.01, "VISIBLE like for like: %.4f" % rows[1][1]),
-               (mean_horizon <= 0.75, "horizons vs r.horizon: %.3f deg" % mean_horizon),
-               (sun[0] >= 80.0, "r.sun within 1%% on %.2f%% of cells" % sun[0])]
+               (mean_horizon <= 0.75, "horizons vs r.horizon: %.3f deg" % mean_horizon)]
+    if sun is not None:
+        checks.append((sun[0] >= 80.0, "r.sun within 1%% on %.2f%% of cells" % sun[0]))
 
 
 def rsun(grass, prefix, work, side):
