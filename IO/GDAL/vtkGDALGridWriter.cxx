@@ -563,7 +563,7 @@ int vtkGDALGridWriter::WriteBandCopy(int band, const char* fileName)
   GDALDatasetH source = GDALOpen(this->FileName.c_str(), GA_ReadOnly);
   if (!source || band < 1 || band > GDALGetRasterCount(source) || to.empty())
   {
-    vtkErrorMacro("Cannot copy band " << band << " of "
+    vtkErrorMacro("cannot copy band " << band << " of "
                                       << vtkApertureText::QuoteName(this->FileName)
                                       << (source ? ": no such band or no file name." : ": ")
                                       << (source ? "" : session.LastError()));
@@ -595,7 +595,7 @@ int vtkGDALGridWriter::WriteBandCopy(int band, const char* fileName)
   GDALClose(source);
   if (!copy || CPLGetLastErrorType() >= CE_Failure)
   {
-    vtkErrorMacro("Cannot write " << vtkApertureText::QuoteName(to) << ": " << session.LastError());
+    vtkErrorMacro("cannot write " << vtkApertureText::QuoteName(to) << ": " << session.LastError());
     VSIUnlink(to.c_str());
     return 0;
   }

@@ -159,6 +159,20 @@ for mode, holes in (("wall", 24), ("fill", 0)):
             check(band["mean"] < open_mean, f"walls take sky: SVF mean {band['mean']} < "
                   f"{open_mean}")
 
+# Tiles give the products of one piece too, with no-data filled (the halo grows by the fill's
+# reach) and as walls (of the DEM's highest height, read once).
+for mode in ("fill", "wall"):
+    sums = []
+    for rows in ("37", "100000"):
+        name = path(f"tiled-products-{mode}-{rows}.tif")
+        result = run(dem, "-o", name, "--sectors", "16", "--max-distance", "1500",
+                     "--tile-size", rows, "--quiet", "--nodata-as", mode,
+                     "--outputs", "svf,svf-cosine,openness")
+        tiled = gdalinfo(name, "-checksum")
+        sums.append([b.get("checksum") for b in tiled["bands"]] if tiled else None)
+    check(sums[0] is not None and sums[0] == sums[1],
+          f"--nodata-as {mode}: tiles of 37 x 37 give the products of one piece " + str(sums))
+
 # --cog: a cloud-optimised GeoTIFF with overviews, the same values, no temporary file left.
 result = run(dem, "-o", path("cog.tif"), "--sectors", "16", "--quiet", "--cog", "--compress")
 cog = gdalinfo(path("cog.tif"), "-checksum")
@@ -190,8 +204,11 @@ check(result.returncode == 0 and "128 x 128 texels" in result.stdout and "spacin
 truncated = path("truncated.tif")
 with open(out, "rb") as f, open(truncated, "wb") as g:
     g.write(f.read()[:3000])
+empty = path("all-no-data.asc")
+write_ascii_grid(empty, fuji_heights(16), 480.0, lambda r, c: True)
 cases = [
     ([path("missing.tif"), "-o", path("x.tif")], 1),
+    ([empty, "-o", path("x.tif"), "--nodata-as", "wall"], 1),  # no height to build walls of
     ([truncated, "-o", path("x.tif")], 1),
     ([out, "-o", path("x.tif")], 1),  # five bands: not a DEM
     ([dem, "-o", path("no-such-folder/x.tif")], 1),
