@@ -16,7 +16,8 @@
 // vtkCompositeApertureLightingMapper with the squares in two blocks) at the triangle's vertices,
 // interpolated, as the vertex shader evaluates them; per texel (48 sectors, resampled to 32 in a
 // texture array) at the pixel, and per fragment from interpolated angles where the points have
-// no normals. Data without horizons, or with bad ones, warn once and get the exact cap.
+// no normals. Data without horizons, or with bad ones (NaN, too few sectors, sectors turned by
+// SectorRotation), warn once and get the exact cap.
 
 #include "vtkApertureLightingMapper.h"
 #include "vtkApertureTestHarness.h"
@@ -352,6 +353,18 @@ void TestPerVertex(Bench& bench)
   Check(worst <= 1.0, "horizons of 3 sectors give the exact cap (/255)", worst, 1.0);
   Check(bench.Observer->GetWarningMessage().find("3 components") != std::string::npos,
     "horizons of 3 sectors warn");
+  bench.Observer->Clear();
+  vtkNew<vtkFloatArray> turned; // vtkAperturePrecompute's names with SectorRotation -2.8125
+  turned->SetName("HorizonAngles");
+  turned->SetNumberOfComponents(32);
+  turned->SetNumberOfTuples(mesh->GetNumberOfPoints());
+  turned->Fill(0.1);
+  turned->SetComponentName(0, "Az2.8125");
+  mesh->GetPointData()->AddArray(turned);
+  worst = bench.Run(s, quads, 24, true, true);
+  Check(worst <= 1.0, "turned sectors give the exact cap (/255)", worst, 1.0);
+  Check(bench.Observer->GetWarningMessage().find("SectorRotation") != std::string::npos,
+    "turned sectors warn");
   bench.Observer->Clear();
   mesh->GetPointData()->RemoveArray("HorizonAngles");
   worst = bench.Run(s, quads, 24, true, true);
