@@ -854,13 +854,17 @@ private:
   void AddProducts(vtkIdType o, const double slopes[4]) const
   {
     const vtkHorizonApertures::Buffers& out = this->Out;
-    const float* n = &out.Normals[3 * o];
+    const bool skies = out.SkyViewFactor || out.SkyViewFactorCosine;
     double sky[4] = { 0.0, 0.0, 0.0, 0.0 }; // elevations 0 … max(h, 0) of the sky
     for (int k = 0; k < this->L.Count; ++k)
     {
-      const double top = std::max(slopes[k], 0.0), cosA = 1.0 / std::sqrt(1.0 + top * top);
-      Deficit(
-        this->L.Sectors[k].Dphi, this->L.Sectors[k].Chord, FastAtan(top), top * cosA, cosA, sky);
+      const double h = FastAtan(slopes[k]); // −π/2 without a sample
+      if (skies)
+      {
+        const double top = std::max(slopes[k], 0.0), cosA = 1.0 / std::sqrt(1.0 + top * top);
+        const Sector& sector = this->L.Sectors[k];
+        Deficit(sector.Dphi, sector.Chord, std::max(h, 0.0), top * cosA, cosA, sky);
+      }
       if (slopes[k] == NoSample)
       {
         continue;
@@ -868,7 +872,7 @@ private:
       ++this->Sampled[o];
       if (out.PositiveOpenness)
       {
-        out.PositiveOpenness[o] += static_cast<float>(0.5 * Pi - FastAtan(slopes[k]));
+        out.PositiveOpenness[o] += static_cast<float>(0.5 * Pi - h);
       }
       if (out.NegativeOpenness)
       {
@@ -881,6 +885,7 @@ private:
     }
     if (out.SkyViewFactorCosine)
     {
+      const float* n = &out.Normals[3 * o];
       out.SkyViewFactorCosine[o] +=
         static_cast<float>(n[0] * sky[1] + n[1] * sky[2] + n[2] * sky[3]);
     }
