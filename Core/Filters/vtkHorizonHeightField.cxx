@@ -275,6 +275,10 @@ double FillValue(const std::vector<float>& z, const std::vector<unsigned char>& 
 void TreatNoData(
   const vtkHorizonHeightField::Settings& settings, Storage& s, vtkHorizonApertures::Grid& grid)
 {
+  if (settings.NoDataAs == vtkHorizonHeightField::Settings::Open)
+  {
+    return; // the sweeps read no-data themselves: nothing to copy
+  }
   const vtkIdType n = grid.Nx * grid.Ny;
   std::vector<unsigned char> valid(n);
   double highest = -std::numeric_limits<double>::infinity();
@@ -283,7 +287,7 @@ void TreatNoData(
     valid[t] = (!grid.Valid || grid.Valid[t]) && std::isfinite(grid.Heights[t]);
     highest = valid[t] ? std::max(highest, double(grid.Heights[t])) : highest;
   }
-  if (settings.NoDataAs == 0 || std::count(valid.begin(), valid.end(), 0) == 0)
+  if (std::count(valid.begin(), valid.end(), 0) == 0)
   {
     return;
   }
@@ -298,17 +302,15 @@ void TreatNoData(
       for (vtkIdType t = first; t < last; ++t)
       {
         s.Z[t] = valid[t] ? s.Z[t]
-          : settings.NoDataAs == 1
+          : settings.NoDataAs == vtkHorizonHeightField::Settings::Wall
           ? static_cast<float>(wall)
           : static_cast<float>(FillValue(s.Z, valid, grid.Nx, grid.Ny, t, settings.FillDistance));
       }
     });
-  s.Valid.assign(n, 1);
-  for (vtkIdType t = 0; t < n; ++t)
-  {
-    s.Valid[t] = std::isfinite(s.Z[t]) ? 1 : 0; // a fill can leave holes wider than its reach
-  }
-  s.Receives = settings.NoDataAs == 1 ? valid : s.Valid;
+  s.Valid.resize(n); // a fill can leave holes wider than its reach
+  std::transform(s.Z.begin(), s.Z.end(), s.Valid.begin(),
+    [](float z) { return static_cast<unsigned char>(std::isfinite(z)); });
+  s.Receives = settings.NoDataAs == vtkHorizonHeightField::Settings::Wall ? valid : s.Valid;
   grid.Heights = s.Z.data();
   grid.Valid = s.Valid.data();
   grid.Receives = s.Receives.data();
@@ -454,7 +456,7 @@ vtkIdType vtkHorizonHeightField::Compute(vtkImageData* image, vtkDataArray* heig
   Storage storage;
   vtkHorizonApertures::Grid grid;
   vtkIdType nx = 0, ny = 0;
-  const int fill = settings.NoDataAs == 2 ? settings.FillDistance : 0;
+  const int fill = settings.NoDataAs == Settings::Fill ? settings.FillDistance : 0;
   if (!SweepWindow(image, extent, settings.MaximumDistance, fill, window, error) ||
     !MakeGrid(image, heights, extent, window, settings, storage, grid, error) ||
     !vtkHorizonApertures::GetOutputSize(grid, nx, ny, error))

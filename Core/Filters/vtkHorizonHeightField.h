@@ -52,11 +52,17 @@ public:
     bool NegativeOpenness = false;    ///< "NegativeOpenness"
     /// Degrees counter-clockwise from the grid's i axis where sector 0 starts.
     double SectorRotation = 0.0;
-    /// No-data texels: 0 open (neither occlude nor receive), 1 walls of WallHeight (NaN: the
-    /// highest valid height of the window swept) that occlude but get no output, 2 filled from
-    /// the valid texels within FillDistance texels (vtkAperturePrecompute::SetNoDataAs()), then
-    /// computed as the others.
-    int NoDataAs = 0;
+    /// No-data texels: Open (neither occlude nor receive), Wall, of WallHeight (NaN: the
+    /// highest valid height of the window swept), occluding but getting no output, or Fill,
+    /// from the valid texels within FillDistance texels (vtkAperturePrecompute::SetNoDataAs()),
+    /// then computed as the others. The values are vtkAperturePrecompute's NO_DATA_*.
+    enum NoDataTreatment
+    {
+      Open = 0,
+      Wall = 1,
+      Fill = 2
+    };
+    int NoDataAs = Open;
     double WallHeight = std::numeric_limits<double>::quiet_NaN();
     int FillDistance = 64;
     const char* BentNormalName = "BentNormal";

@@ -40,7 +40,6 @@
 #include <memory>
 #include <sstream>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace
@@ -105,34 +104,47 @@ void Configure(vtkAperturePrecompute* filter, const Options& o, double convergen
   }
 }
 
-// The writer's arrays, in the order of the bands.
-void ChooseArrays(vtkGDALGridWriter* writer, const Outputs& what)
+// The writer's arrays, in the order of the bands; returns the bands before the horizons', which
+// come last.
+int ChooseArrays(vtkGDALGridWriter* writer, const Outputs& what)
 {
-  const std::pair<bool, const char*> arrays[] = { { what.Apertures, "BentNormal" },
-    { what.Apertures, "ApertureRadius" }, { what.Apertures, "AmbientOcclusion" },
-    { what.SkyViewFactor, "SkyViewFactor" }, { what.SkyViewFactorCosine, "SkyViewFactorCosine" },
-    { what.PositiveOpenness, "PositiveOpenness" }, { what.NegativeOpenness, "NegativeOpenness" },
-    { what.Horizons, "HorizonAngles" } };
+  struct Array
+  {
+    bool Wanted;
+    const char* Name;
+    int Bands;
+  };
+  const Array arrays[] = { { what.Apertures, "BentNormal", 3 },
+    { what.Apertures, "ApertureRadius", 1 }, { what.Apertures, "AmbientOcclusion", 1 },
+    { what.SkyViewFactor, "SkyViewFactor", 1 },
+    { what.SkyViewFactorCosine, "SkyViewFactorCosine", 1 },
+    { what.PositiveOpenness, "PositiveOpenness", 1 },
+    { what.NegativeOpenness, "NegativeOpenness", 1 } };
+  int bands = 0;
   for (const auto& array : arrays)
   {
-    if (array.first)
+    if (array.Wanted)
     {
-      writer->AddArrayName(array.second);
+      writer->AddArrayName(array.Name);
+      bands += array.Bands;
     }
   }
+  if (what.Horizons)
+  {
+    writer->AddArrayName("HorizonAngles");
+  }
+  return bands;
 }
 
-// Copies the horizon bands, the file's last, into r.horizon's rasters; the file names written.
+// Copies the horizon bands, after the first `before`, into r.horizon's rasters; the file names
+// written.
 bool WriteGrassHorizons(
-  vtkGDALGridWriter* writer, const Options& o, std::vector<std::string>& written)
+  vtkGDALGridWriter* writer, const Options& o, int before, std::vector<std::string>& written)
 {
-  const Outputs& w = o.What;
-  const int bands = (w.Apertures ? 5 : 0) + w.SkyViewFactor + w.SkyViewFactorCosine +
-    w.PositiveOpenness + w.NegativeOpenness + o.Sectors;
   for (int k = 0; k < o.Sectors; ++k)
   {
     written.push_back(GrassHorizonName(o.GrassHorizons, k, o.Sectors) + ".tif");
-    if (!writer->WriteBandCopy(bands - o.Sectors + 1 + k, written.back().c_str()))
+    if (!writer->WriteBandCopy(before + 1 + k, written.back().c_str()))
     {
       return false;
     }
@@ -207,7 +219,7 @@ int main(int argc, char* argv[])
   writer->SetTileColumns(tile);
   writer->SetCompress(o.Compress);
   writer->SetCloudOptimized(o.CloudOptimized);
-  ChooseArrays(writer, o.What);
+  const int beforeHorizons = ChooseArrays(writer, o.What);
 
   const auto start = std::chrono::steady_clock::now();
   int ok = 0;
@@ -219,7 +231,7 @@ int main(int argc, char* argv[])
     ok = writer->Write();
   }
   std::vector<std::string> grass;
-  if (ok && !o.GrassHorizons.empty() && !WriteGrassHorizons(writer, o, grass))
+  if (ok && !o.GrassHorizons.empty() && !WriteGrassHorizons(writer, o, beforeHorizons, grass))
   {
     ok = 0; // a run that fails leaves no file behind
     grass.push_back(o.Output);
