@@ -24,6 +24,8 @@
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
+#include <algorithm>
+#include <array>
 #include <limits>
 
 namespace
@@ -98,6 +100,79 @@ vtkSmartPointer<vtkPolyData> Surface(
   surface->SetStrips(KeepCells(piece->GetStrips(), piece->GetPoints(), all, boxes));
   return surface;
 }
+
+// The positions of a piece's finite points, sorted, for exact look-ups.
+std::vector<std::array<double, 3>> SortedPositions(vtkPoints* points)
+{
+  std::vector<std::array<double, 3>> positions;
+  for (vtkIdType i = 0; points && i < points->GetNumberOfPoints(); ++i)
+  {
+    std::array<double, 3> p;
+    points->GetPoint(i, p.data());
+    if (vtkMath::IsFinite(p[0]) && vtkMath::IsFinite(p[1]) && vtkMath::IsFinite(p[2]))
+    {
+      positions.push_back(p);
+    }
+  }
+  std::sort(positions.begin(), positions.end());
+  return positions;
+}
+
+// Splits `cells` into those with a point at one of `positions` and the others.
+void SplitTouching(vtkCellArray* cells, vtkPoints* points,
+  const std::vector<std::array<double, 3>>& positions, vtkCellArray* touching, vtkCellArray* rest)
+{
+  auto it = vtk::TakeSmartPointer(cells->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    it->GetCurrentCell(size, ids);
+    bool touches = false;
+    for (vtkIdType k = 0; k < size && !touches; ++k)
+    {
+      std::array<double, 3> p;
+      points->GetPoint(ids[k], p.data());
+      touches = vtkMath::IsFinite(p[0]) && vtkMath::IsFinite(p[1]) && vtkMath::IsFinite(p[2]) &&
+        std::binary_search(positions.begin(), positions.end(), p);
+    }
+    (touches ? touching : rest)->InsertNextCell(size, ids);
+  }
+}
+
+// The polydata of `polys` and `strips` on only the points they use.
+vtkSmartPointer<vtkPolyData> Compact(vtkPoints* points, vtkCellArray* polys, vtkCellArray* strips)
+{
+  std::vector<vtkIdType> renumber(points->GetNumberOfPoints(), -1);
+  auto used = vtkSmartPointer<vtkPoints>::New();
+  used->SetDataType(points->GetDataType());
+  auto compact = vtkSmartPointer<vtkPolyData>::New();
+  compact->SetPoints(used);
+  for (vtkCellArray* cells : { polys, strips })
+  {
+    vtkNew<vtkCellArray> renumbered;
+    std::vector<vtkIdType> local;
+    auto it = vtk::TakeSmartPointer(cells->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      vtkIdType size;
+      const vtkIdType* ids;
+      it->GetCurrentCell(size, ids);
+      local.assign(ids, ids + size);
+      for (vtkIdType& id : local)
+      {
+        if (renumber[id] < 0)
+        {
+          renumber[id] = used->InsertNextPoint(points->GetPoint(id));
+        }
+        id = renumber[id];
+      }
+      renumbered->InsertNextCell(size, local.data());
+    }
+    cells == polys ? compact->SetPolys(renumbered) : compact->SetStrips(renumbered);
+  }
+  return compact;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -112,14 +187,41 @@ bool vtkApertureDistributedOccluders::IsDistributed(
 
 //------------------------------------------------------------------------------
 bool vtkApertureDistributedOccluders::GatherForPiece(vtkMultiProcessController* controller,
-  vtkInformation* outInfo, vtkPolyData* input, vtkSmartPointer<vtkPolyData>& remote)
+  vtkInformation* outInfo, vtkPolyData* input, vtkSmartPointer<vtkPolyData>& remote,
+  vtkSmartPointer<vtkPolyData>& ghosts)
 {
   if (!IsDistributed(controller, outInfo))
   {
     return false;
   }
   remote = Gather(controller, { input }, std::numeric_limits<double>::infinity());
+  ghosts = TakeGhosts(input, remote);
   return true;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> vtkApertureDistributedOccluders::TakeGhosts(
+  vtkPolyData* piece, vtkSmartPointer<vtkPolyData>& remote)
+{
+  if (!piece || !remote || !remote->GetPoints() || remote->GetNumberOfCells() == 0)
+  {
+    return nullptr;
+  }
+  const std::vector<std::array<double, 3>> positions = SortedPositions(piece->GetPoints());
+  vtkNew<vtkCellArray> ghostPolys, ghostStrips, restPolys, restStrips;
+  SplitTouching(remote->GetPolys(), remote->GetPoints(), positions, ghostPolys, restPolys);
+  SplitTouching(remote->GetStrips(), remote->GetPoints(), positions, ghostStrips, restStrips);
+  if (ghostPolys->GetNumberOfCells() + ghostStrips->GetNumberOfCells() == 0)
+  {
+    return nullptr;
+  }
+  auto rest = vtkSmartPointer<vtkPolyData>::New();
+  rest->SetPoints(remote->GetPoints());
+  rest->SetPolys(restPolys);
+  rest->SetStrips(restStrips);
+  vtkSmartPointer<vtkPolyData> ghosts = Compact(remote->GetPoints(), ghostPolys, ghostStrips);
+  remote = rest;
+  return ghosts;
 }
 
 //------------------------------------------------------------------------------

@@ -53,10 +53,21 @@ public:
 
   /**
    * For a filter of one surface: when the request is distributed, the other ranks' whole
-   * surfaces into `remote` (collective), and true.
+   * surfaces (collective), the cells around the input's border into `ghosts` (TakeGhosts()) and
+   * the others into `remote`, and true.
    */
   static bool GatherForPiece(vtkMultiProcessController* controller, vtkInformation* outInfo,
-    vtkPolyData* input, vtkSmartPointer<vtkPolyData>& remote);
+    vtkPolyData* input, vtkSmartPointer<vtkPolyData>& remote, vtkSmartPointer<vtkPolyData>& ghosts);
+
+  /**
+   * Moves the cells of `remote` that touch a point of `piece` (at the same position) into the
+   * returned polydata, on their own points: the ring of the other pieces around this piece's
+   * border, which belongs to its points' surface (their normals, creases, ray offsets and own
+   * triangles) rather than to the occluders. `remote` keeps the other cells. Returns nullptr when
+   * no cell touches the piece.
+   */
+  static vtkSmartPointer<vtkPolyData> TakeGhosts(
+    vtkPolyData* piece, vtkSmartPointer<vtkPolyData>& remote);
 
   /**
    * A filter's occluders: the vtkPolyData on its occluder port, and `remote` when it has cells.

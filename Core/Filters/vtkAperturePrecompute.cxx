@@ -220,6 +220,7 @@ struct Receiver
   vtkDataSet* Output;
   vtkDataArray* Heights; // height fields only
   vtkSmartPointer<vtkPolyData> Refined;
+  vtkSmartPointer<vtkPolyData> Ghosts; // other pieces' cells around a distributed piece
   vtkApertureSurface Surface;
   Caps Results;
 
@@ -301,7 +302,7 @@ public:
 bool vtkAperturePrecompute::vtkRun::CollectReceivers(vtkDataObject* input, vtkDataObject* output)
 {
   auto add = [&](vtkDataSet* in, vtkDataSet* out) {
-    this->Receivers.emplace_back(new Receiver{ in, out, nullptr, nullptr, {}, {} });
+    this->Receivers.emplace_back(new Receiver{ in, out, nullptr, nullptr, nullptr, {}, {} });
   };
   auto* compositeIn = vtkCompositeDataSet::SafeDownCast(input);
   if (!compositeIn)
@@ -426,6 +427,11 @@ void vtkAperturePrecompute::vtkRun::CollectOccluders(vtkInformationVector* occlu
   {
     this->RemoteOccluders = vtkApertureDistributedOccluders::Gather(
       this->Self->Controller, local, this->Self->SearchDistance());
+    if (local.size() == 1 && this->Receivers.size() == 1)
+    {
+      this->Receivers[0]->Ghosts =
+        vtkApertureDistributedOccluders::TakeGhosts(local[0], this->RemoteOccluders);
+    }
     if (this->RemoteOccluders->GetNumberOfCells() > 0)
     {
       this->Occluders.push_back(this->RemoteOccluders);
@@ -573,7 +579,7 @@ bool vtkAperturePrecompute::vtkRun::BuildSurfaces()
   std::vector<vtkApertureSceneSurfaces::Receiver> receivers;
   for (const auto& r : this->Receivers)
   {
-    receivers.push_back({ r->Source(), r->Heights, &r->Surface });
+    receivers.push_back({ r->Source(), r->Heights, &r->Surface, r->Ghosts });
   }
   vtkApertureSceneSurfaces::Settings settings;
   settings.FeatureAngle = self->FeatureAngle;

@@ -313,9 +313,9 @@ int vtkApertureReference::RequestData(
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   // A distributed run: the other ranks' surfaces occlude too (collective, before any check).
-  vtkSmartPointer<vtkPolyData> remote;
+  vtkSmartPointer<vtkPolyData> remote, ghosts;
   if (vtkApertureDistributedOccluders::GatherForPiece(
-        this->Controller, outputVector->GetInformationObject(0), input, remote) &&
+        this->Controller, outputVector->GetInformationObject(0), input, remote, ghosts) &&
     (!input || input->GetNumberOfPoints() == 0))
   {
     output->Initialize(); // an empty piece
@@ -333,7 +333,7 @@ int vtkApertureReference::RequestData(
   vtkApertureSceneSurfaces::Settings settings;
   settings.FeatureAngle = this->FeatureAngle;
   settings.RayOffset = this->RayOffset;
-  if (!vtkApertureSceneSurfaces::Build(input,
+  if (!vtkApertureSceneSurfaces::Build(input, ghosts,
         vtkApertureDistributedOccluders::Occluders(inputVector[1], remote), settings, receivers,
         occluderSurfaces, error))
   {

@@ -10,12 +10,16 @@
 =========================================================================*/
 #include "vtkApertureSceneSurfaces.h"
 
+#include "vtkApertureCellCheck.h"
 #include "vtkApertureGridSurface.h"
 #include "vtkApertureMeshSurface.h"
 #include "vtkApertureRayOffsets.h"
 #include "vtkApertureSurface.h"
 
+#include "vtkCellArray.h"
 #include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 
 namespace
@@ -38,12 +42,70 @@ void SceneOrigin(const std::vector<Receiver>& receivers, const std::vector<vtkPo
     {
       vtkApertureSurface::ExpandBounds(vtkPolyData::SafeDownCast(r.Input), bounds);
     }
+    if (r.Ghosts)
+    {
+      vtkApertureSurface::ExpandBounds(r.Ghosts, bounds);
+    }
   }
   for (vtkPolyData* occluder : occluders)
   {
     vtkApertureSurface::ExpandBounds(occluder, bounds);
   }
   vtkApertureSurface::OriginOf(bounds, origin);
+}
+
+// The input's polygons and strips, then the ghosts', on the input's points and then the ghosts'
+// (double precision holds both exactly).
+vtkSmartPointer<vtkPolyData> WithGhosts(vtkPolyData* input, vtkPolyData* ghosts)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  const vtkIdType n = input->GetNumberOfPoints();
+  points->SetNumberOfPoints(n + ghosts->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    points->SetPoint(i, i < n ? input->GetPoint(i) : ghosts->GetPoint(i - n));
+  }
+  auto merged = vtkSmartPointer<vtkPolyData>::New();
+  merged->SetPoints(points);
+  vtkNew<vtkCellArray> polys, strips;
+  std::vector<vtkIdType> ids;
+  for (vtkPolyData* part : { input, ghosts })
+  {
+    const vtkIdType shift = part == input ? 0 : n;
+    vtkApertureMeshSurface::ForEachPolygonOrStrip(part,
+      [&](vtkIdType npts, const vtkIdType* cell, bool strip)
+      {
+        ids.assign(cell, cell + npts);
+        for (vtkIdType& id : ids)
+        {
+          id += shift;
+        }
+        (strip ? strips : polys)->InsertNextCell(npts, ids.data());
+      });
+  }
+  merged->SetPolys(polys);
+  merged->SetStrips(strips);
+  return merged;
+}
+
+// A polydata receiver's surface: with its ghost cells where it has them and no normals of its
+// own (the ghosts bring none), mapping only its own points.
+bool SetMesh(const Receiver& r, const double origin[3], double featureAngle, std::string& error)
+{
+  auto* poly = vtkPolyData::SafeDownCast(r.Input);
+  if (!r.Ghosts || vtkApertureSurface::GivenNormals(poly) ||
+    !vtkApertureCellCheck::FindBadCell(poly).empty())
+  {
+    return vtkApertureMeshSurface::Set(*r.Surface, poly, origin, featureAngle, error);
+  }
+  if (!vtkApertureMeshSurface::Set(
+        *r.Surface, WithGhosts(poly, r.Ghosts), origin, featureAngle, error))
+  {
+    return false;
+  }
+  r.Surface->KeepInputs(poly);
+  return true;
 }
 }
 
@@ -58,11 +120,9 @@ bool vtkApertureSceneSurfaces::Build(const std::vector<Receiver>& receivers,
   for (const Receiver& r : receivers)
   {
     auto* image = vtkImageData::SafeDownCast(r.Input);
-    const bool ok = image
-      ? vtkApertureGridSurface::Set(
-          *r.Surface, image, r.Heights, settings.HeightScale, origin, problem)
-      : vtkApertureMeshSurface::Set(
-          *r.Surface, vtkPolyData::SafeDownCast(r.Input), origin, settings.FeatureAngle, problem);
+    const bool ok = image ? vtkApertureGridSurface::Set(
+                              *r.Surface, image, r.Heights, settings.HeightScale, origin, problem)
+                          : SetMesh(r, origin, settings.FeatureAngle, problem);
     if (!ok)
     {
       error = "Cannot use the input: " + problem + ".";
@@ -84,12 +144,14 @@ bool vtkApertureSceneSurfaces::Build(const std::vector<Receiver>& receivers,
 }
 
 //------------------------------------------------------------------------------
-bool vtkApertureSceneSurfaces::Build(vtkPolyData* input, const std::vector<vtkPolyData*>& occluders,
-  const Settings& settings, vtkApertureSurface& receivers,
-  std::vector<vtkApertureSurface>& occluderSurfaces, std::string& error)
+bool vtkApertureSceneSurfaces::Build(vtkPolyData* input, vtkPolyData* ghosts,
+  const std::vector<vtkPolyData*>& occluders, const Settings& settings,
+  vtkApertureSurface& receivers, std::vector<vtkApertureSurface>& occluderSurfaces,
+  std::string& error)
 {
   Receiver receiver;
   receiver.Input = input;
+  receiver.Ghosts = ghosts;
   receiver.Surface = &receivers;
   if (!Build({ receiver }, occluders, settings, occluderSurfaces, error))
   {

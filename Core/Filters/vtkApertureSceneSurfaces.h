@@ -38,12 +38,19 @@ class vtkPolyData;
 class VTKAPERTURELIGHTINGCORE_EXPORT vtkApertureSceneSurfaces
 {
 public:
-  /// A receiving dataset: a polydata, or a vtkImageData height field with its heights.
+  /**
+   * A receiving dataset: a polydata, or a vtkImageData height field with its heights. A
+   * polydata piece of distributed data may have Ghosts: the other pieces' cells around its
+   * border (vtkApertureDistributedOccluders::TakeGhosts), which its surface includes, so that
+   * its border points get the normals, creases and own triangles of the whole surface. They
+   * receive no output. Left out when the input has normals of its own.
+   */
   struct Receiver
   {
     vtkDataSet* Input = nullptr;
     vtkDataArray* Heights = nullptr;
     vtkApertureSurface* Surface = nullptr;
+    vtkPolyData* Ghosts = nullptr;
   };
 
   /// How surfaces are built.
@@ -64,12 +71,14 @@ public:
     std::vector<vtkApertureSurface>& occluderSurfaces, std::string& error);
 
   /**
-   * The same for one polydata receiver, and also an error when neither it nor an occluder has a
-   * polygon or strip (nothing would cast shadows, and points would have no normals).
+   * The same for one polydata receiver (with its ghost cells, or nullptr), and also an error when
+   * neither it nor an occluder has a polygon or strip (nothing would cast shadows, and points would
+   * have no normals).
    */
-  static bool Build(vtkPolyData* input, const std::vector<vtkPolyData*>& occluders,
-    const Settings& settings, vtkApertureSurface& receivers,
-    std::vector<vtkApertureSurface>& occluderSurfaces, std::string& error);
+  static bool Build(vtkPolyData* input, vtkPolyData* ghosts,
+    const std::vector<vtkPolyData*>& occluders, const Settings& settings,
+    vtkApertureSurface& receivers, std::vector<vtkApertureSurface>& occluderSurfaces,
+    std::string& error);
 };
 
 #endif

@@ -13,6 +13,8 @@
 #include "vtkApertureRaySampler.h"
 
 #include "vtkArrayDispatch.h"
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
 #include "vtkDataArrayRange.h"
 #include "vtkDataSet.h"
 #include "vtkFloatArray.h"
@@ -206,5 +208,61 @@ void vtkApertureSurface::CountFlippedNormals()
     const double dot =
       n[0] * winding[3 * i] + n[1] * winding[3 * i + 1] + n[2] * winding[3 * i + 2];
     this->FlippedNormals += (this->Valid[i] && dot < 0.0) ? 1 : 0;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureSurface::KeepInputs(vtkPolyData* input)
+{
+  const vtkIdType n = input->GetNumberOfPoints();
+  this->InputPoints.resize(n);
+  if (!this->PolyCorners.empty())
+  {
+    this->PolyCorners.resize(input->GetPolys()->GetNumberOfConnectivityIds());
+    this->StripCorners.resize(input->GetStrips()->GetNumberOfConnectivityIds());
+  }
+  const vtkIdType strips = input->GetNumberOfStrips();
+  std::vector<vtkIdType> stripTriangles;
+  for (size_t t = 0; t < this->StripTriangles.size(); t += 7)
+  {
+    if (this->StripTriangles[t] < strips)
+    {
+      stripTriangles.insert(stripTriangles.end(), this->StripTriangles.begin() + t,
+        this->StripTriangles.begin() + t + 7);
+    }
+  }
+  this->StripTriangles.swap(stripTriangles);
+  this->BreakStrips = this->BreakStrips && strips > 0;
+
+  // The counts, over the input's points only.
+  std::vector<unsigned char> split(n, 0);
+  for (vtkCellArray* cells : { input->GetPolys(), input->GetStrips() })
+  {
+    const std::vector<vtkIdType>& corners =
+      cells == input->GetPolys() ? this->PolyCorners : this->StripCorners;
+    size_t c = 0;
+    vtkIdType npts;
+    const vtkIdType* ids;
+    auto it = vtk::TakeSmartPointer(cells->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal() && !corners.empty(); it->GoToNextCell())
+    {
+      it->GetCurrentCell(npts, ids);
+      for (vtkIdType k = 0; k < npts; ++k, ++c)
+      {
+        split[ids[k]] |= corners[c] != this->InputPoints[ids[k]] ? 1 : 0;
+      }
+    }
+  }
+  this->SplitPoints = std::count(split.begin(), split.end(), 1);
+  this->NonFinitePoints = 0;
+  this->UndefinedNormals = 0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3];
+    input->GetPoint(i, p);
+    const vtkIdType point = this->InputPoints[i];
+    const bool finite = IsFinite(p);
+    this->NonFinitePoints += point == Invalid && !finite ? 1 : 0;
+    this->UndefinedNormals += finite && (point == Invalid || (point >= 0 && !this->Valid[point]));
   }
 }

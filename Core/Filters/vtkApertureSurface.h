@@ -190,6 +190,14 @@ public:
    * Sets FlippedNormals: given normals against their triangles' winding.
    */
   void CountFlippedNormals();
+
+  /**
+   * After a polydata of `input` followed by more points and cells (another piece's ghost cells:
+   * its points after the input's, its polygons after the input's polygons, its strips after its
+   * strips) was built: maps only `input`'s points and corners to receiving points, and counts
+   * only its points. The other receiving points stay, with their rays.
+   */
+  void KeepInputs(vtkPolyData* input);
 };
 
 #endif

@@ -166,8 +166,8 @@ bool vtkLightSphereVisibility::ComputeDirections(const Directions& directions,
 //------------------------------------------------------------------------------
 // Visibility computed before for the same geometry and settings is kept: a higher level adds its
 // new directions, a backend's point selection adds the points it newly needs.
-bool vtkLightSphereVisibility::UpdateCache(
-  vtkPolyData* input, const std::vector<vtkPolyData*>& occluders, std::string& error)
+bool vtkLightSphereVisibility::UpdateCache(vtkPolyData* input, vtkPolyData* ghosts,
+  const std::vector<vtkPolyData*>& occluders, std::string& error)
 {
   vtkInternals& in = *this->Internals;
   std::vector<vtkMTimeType> key = { input->GetMTime() };
@@ -185,7 +185,7 @@ bool vtkLightSphereVisibility::UpdateCache(
   settings.FeatureAngle = this->FeatureAngle;
   settings.RayOffset = this->RayOffset;
   if (!vtkApertureSceneSurfaces::Build(
-        input, occluders, settings, in.Receivers, in.Occluders, error))
+        input, ghosts, occluders, settings, in.Receivers, in.Occluders, error))
   {
     return false;
   }
@@ -384,9 +384,9 @@ int vtkLightSphereVisibility::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   this->NumberOfComputedPoints = 0;
   // A distributed run: the other ranks' surfaces occlude too (collective, before any check).
-  vtkSmartPointer<vtkPolyData> remote;
+  vtkSmartPointer<vtkPolyData> remote, ghosts;
   if (vtkApertureDistributedOccluders::GatherForPiece(
-        this->Controller, outputVector->GetInformationObject(0), input, remote) &&
+        this->Controller, outputVector->GetInformationObject(0), input, remote, ghosts) &&
     (!input || input->GetNumberOfPoints() == 0))
   {
     output->Initialize(); // an empty piece
@@ -401,7 +401,7 @@ int vtkLightSphereVisibility::RequestData(
   // 1. The settings, the surfaces, and what is kept of earlier updates; 2. the points needed.
   if (!this->CheckSettings(error) ||
     !this->UpdateCache(
-      input, vtkApertureDistributedOccluders::Occluders(inputVector[1], remote), error))
+      input, ghosts, vtkApertureDistributedOccluders::Occluders(inputVector[1], remote), error))
   {
     vtkErrorMacro(<< error);
     return 0;

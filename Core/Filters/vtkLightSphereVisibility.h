@@ -185,9 +185,10 @@ private:
   vtkLightSphereVisibility(const vtkLightSphereVisibility&) = delete;
   void operator=(const vtkLightSphereVisibility&) = delete;
 
-  // The surfaces of this update, keeping what earlier ones computed for the same geometry.
-  bool UpdateCache(
-    vtkPolyData* input, const std::vector<vtkPolyData*>& occluders, std::string& error);
+  // The surfaces of this update (with a distributed piece's ghost cells), keeping what earlier
+  // ones computed for the same geometry.
+  bool UpdateCache(vtkPolyData* input, vtkPolyData* ghosts,
+    const std::vector<vtkPolyData*>& occluders, std::string& error);
   // The directions of the level that needed points lack.
   bool ComputeMissing(const Directions& directions, bool& aborted, std::string& error);
   void WriteOutputs(

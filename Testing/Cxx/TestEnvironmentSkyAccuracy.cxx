@@ -82,7 +82,7 @@ int TestEnvironmentSkyAccuracy(int argc, char* argv[])
   std::vector<vtkApertureSurface> none;
   std::string error;
   vtkApertureRayScene scene;
-  bool ready = vtkApertureSceneSurfaces::Build(surface, {}, settings, mesh, none, error);
+  bool ready = vtkApertureSceneSurfaces::Build(surface, nullptr, {}, settings, mesh, none, error);
   ready = ready && scene.Build(mesh, {});
   if (!ready)
   {

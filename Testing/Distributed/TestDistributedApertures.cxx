@@ -14,20 +14,27 @@
 // runs vtkAperturePrecompute, vtkApertureReference and vtkOcclusionQueryVisibility's RayCast
 // backend on its piece (UpdatePiece(rank, ranks)), and sends the result to rank 0, which compares
 // every point with a serial run on the whole bunny through a point id array; again with rays of
-// a bounded length (then only a halo of occluders travels); then with every cell on rank 0 and
-// empty pieces elsewhere, which must give empty outputs and rank 0 the serial answer itself.
-// Last, the Fuji tile as a height field in pieces, whose extents must get the whole grid's caps.
+// a bounded length (then only a halo of occluders travels); the same for a CAD part (creases
+// through shared points, a boss standing on a foot); then with every cell on rank 0 and empty
+// pieces elsewhere, which must give empty outputs and rank 0 the serial answer itself. Points on
+// the slabs' borders are where pieces differ if anything does: every point counts, and the
+// largest difference has a goal of its own. Last, the Fuji tile as a height field in pieces,
+// whose extents must get the whole grid's caps.
 
 #include "vtkAperturePrecompute.h"
 #include "vtkApertureReference.h"
 #include "vtkOcclusionQueryVisibility.h"
 
+#include "vtkAppendPolyData.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCleanPolyData.h"
+#include "vtkCylinderSource.h"
 #include "vtkDataArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkImageData.h"
+#include "vtkLinearExtrusionFilter.h"
+#include "vtkLinearSubdivisionFilter.h"
 #include "vtkMPIController.h"
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
@@ -36,6 +43,7 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkTerrainRGBReader.h"
+#include "vtkTriangleFilter.h"
 
 #include <algorithm>
 #include <cmath>
@@ -52,35 +60,93 @@ struct Compared
   int Component; // compared component (the Visibility matrix: its mean over components)
   double MeanGoal;
   double P99Goal;
+  double LargestGoal;
 };
 
-// The bunny with a point id array, as every rank reads it.
+// A copy of a surface with a point id array.
+vtkSmartPointer<vtkPolyData> WithPointIds(vtkPolyData* surface)
+{
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->ShallowCopy(surface);
+  vtkNew<vtkIdTypeArray> ids;
+  ids->SetName("PointId");
+  ids->SetNumberOfTuples(copy->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < copy->GetNumberOfPoints(); ++i)
+  {
+    ids->SetValue(i, i);
+  }
+  copy->GetPointData()->AddArray(ids);
+  return copy;
+}
+
+// The bunny, as every rank reads it.
 vtkSmartPointer<vtkPolyData> ReadBunny(const std::string& data)
 {
   vtkNew<vtkOBJReader> reader;
   reader->SetFileName((data + "/stanford-bunny.obj").c_str());
   reader->Update();
-  auto bunny = vtkSmartPointer<vtkPolyData>::New();
-  bunny->ShallowCopy(reader->GetOutput());
-  vtkNew<vtkIdTypeArray> ids;
-  ids->SetName("PointId");
-  ids->SetNumberOfTuples(bunny->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < bunny->GetNumberOfPoints(); ++i)
+  return WithPointIds(reader->GetOutput());
+}
+
+// Triangles of `source`, their coincident points merged (as an STL reader does, so that faces
+// meeting at a crease share points), each split into 4^levels.
+vtkSmartPointer<vtkPolyData> Faceted(vtkAlgorithm* source, int levels)
+{
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(source->GetOutputPort());
+  vtkNew<vtkCleanPolyData> merged;
+  merged->SetInputConnection(triangles->GetOutputPort());
+  vtkNew<vtkLinearSubdivisionFilter> subdivided;
+  subdivided->SetInputConnection(merged->GetOutputPort());
+  subdivided->SetNumberOfSubdivisions(levels);
+  subdivided->Update();
+  auto part = vtkSmartPointer<vtkPolyData>::New();
+  part->DeepCopy(subdivided->GetOutput());
+  part->GetPointData()->Initialize();
+  return part;
+}
+
+// A CAD part: an L-shaped bracket (an extruded profile) with a cylindrical boss standing on its
+// foot; 90-degree creases through shared points, concave corners, and a contact.
+vtkSmartPointer<vtkPolyData> CadPart()
+{
+  vtkNew<vtkPolyData> profile;
+  vtkNew<vtkPoints> corners;
+  const double xy[6][2] = { { 0, 0 }, { 4, 0 }, { 4, 1 }, { 1, 1 }, { 1, 3 }, { 0, 3 } };
+  for (const auto& c : xy)
   {
-    ids->SetValue(i, i);
+    corners->InsertNextPoint(c[0], c[1], 0.0);
   }
-  bunny->GetPointData()->AddArray(ids);
-  return bunny;
+  const vtkIdType loop[6] = { 0, 1, 2, 3, 4, 5 };
+  vtkNew<vtkCellArray> polygon;
+  polygon->InsertNextCell(6, loop);
+  profile->SetPoints(corners);
+  profile->SetPolys(polygon);
+  vtkNew<vtkLinearExtrusionFilter> bracket;
+  bracket->SetInputData(profile);
+  bracket->SetExtrusionTypeToVectorExtrusion();
+  bracket->SetVector(0.0, 0.0, 2.0);
+  bracket->CappingOn();
+  vtkNew<vtkCylinderSource> boss; // along y, standing on the foot's top (y = 1)
+  boss->SetRadius(0.5);
+  boss->SetHeight(1.0);
+  boss->SetCenter(2.5, 1.5, 1.0);
+  boss->SetResolution(24);
+  vtkNew<vtkAppendPolyData> part;
+  part->AddInputData(Faceted(bracket, 3));
+  part->AddInputData(Faceted(boss, 2));
+  part->Update();
+  return WithPointIds(part->GetOutput());
 }
 
 // The cells of slab `rank` of `ranks` along x (by centroid; all of them to rank 0 when
 // `allOnZero`), with only the points they use.
-vtkSmartPointer<vtkPolyData> Piece(vtkPolyData* bunny, int rank, int ranks, bool allOnZero)
+vtkSmartPointer<vtkPolyData> Piece(vtkPolyData* surface, int rank, int ranks, bool allOnZero)
 {
   double bounds[6];
-  bunny->GetBounds(bounds);
+  surface->GetBounds(bounds);
   vtkNew<vtkCellArray> polys;
-  auto it = vtk::TakeSmartPointer(bunny->GetPolys()->NewIterator());
+  auto it = vtk::TakeSmartPointer(surface->GetPolys()->NewIterator());
   for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
   {
     vtkIdType size;
@@ -89,7 +155,7 @@ vtkSmartPointer<vtkPolyData> Piece(vtkPolyData* bunny, int rank, int ranks, bool
     double x = 0.0;
     for (vtkIdType k = 0; k < size; ++k)
     {
-      x += bunny->GetPoint(ids[k])[0] / size;
+      x += surface->GetPoint(ids[k])[0] / size;
     }
     const double t = (x - bounds[0]) / (bounds[1] - bounds[0]);
     const int owner = allOnZero ? 0 : std::min(ranks - 1, static_cast<int>(t * ranks));
@@ -99,8 +165,8 @@ vtkSmartPointer<vtkPolyData> Piece(vtkPolyData* bunny, int rank, int ranks, bool
     }
   }
   vtkNew<vtkPolyData> cells;
-  cells->SetPoints(bunny->GetPoints());
-  cells->GetPointData()->ShallowCopy(bunny->GetPointData());
+  cells->SetPoints(surface->GetPoints());
+  cells->GetPointData()->ShallowCopy(surface->GetPointData());
   cells->SetPolys(polys);
   vtkNew<vtkCleanPolyData> clean; // drops unused points, merges none
   clean->PointMergingOff();
@@ -214,22 +280,23 @@ bool Compare(const std::vector<vtkSmartPointer<vtkPolyData>>& pieces, vtkPolyDat
     mean += d / differences.size();
   }
   const double p99 = differences[differences.size() * 99 / 100];
-  const bool ok = mean <= what.MeanGoal && p99 <= what.P99Goal;
+  const bool ok =
+    mean <= what.MeanGoal && p99 <= what.P99Goal && differences.back() <= what.LargestGoal;
   std::printf("%s %s %s: %zu points, mean |difference| %.4g (goal %g), 99th percentile %.4g "
-              "(goal %g), largest %.4g\n",
+              "(goal %g), largest %.4g (goal %g)\n",
     ok ? "ok  " : "FAIL", run, what.Array, differences.size(), mean, what.MeanGoal, p99,
-    what.P99Goal, differences.back());
+    what.P99Goal, differences.back(), what.LargestGoal);
   return ok;
 }
 
 // One distributed run; rank 0 gathers the pieces and compares them with `serial`.
-bool Distributed(vtkMPIController* controller, vtkPolyData* bunny,
+bool Distributed(vtkMPIController* controller, vtkPolyData* surface,
   const std::vector<vtkSmartPointer<vtkPolyData>>& serial, bool allOnZero, double distance,
   const char* run)
 {
   const int rank = controller->GetLocalProcessId();
   const int ranks = controller->GetNumberOfProcesses();
-  vtkSmartPointer<vtkPolyData> piece = Piece(bunny, rank, ranks, allOnZero);
+  vtkSmartPointer<vtkPolyData> piece = Piece(surface, rank, ranks, allOnZero);
   std::vector<vtkSmartPointer<vtkPolyData>> outputs = Run(piece, rank, ranks, distance);
   int ok = 1;
   if (allOnZero && rank > 0)
@@ -241,10 +308,14 @@ bool Distributed(vtkMPIController* controller, vtkPolyData* bunny,
     std::printf(
       "%s %s: rank %d's empty piece gives empty outputs\n", ok ? "ok  " : "FAIL", run, rank);
   }
-  // The goals of issue 17 for the apertures, and the same for the other two filters.
-  const std::vector<std::vector<Compared>> compared = { { { "ApertureRadius", 0, 0.01, 0.03 },
-                                                          { "AmbientOcclusion", 0, 0.01, 0.03 } },
-    { { "ReferenceIrradiance", 0, 0.01, 0.03 } }, { { "Visibility", -1, 0.01, 0.03 } } };
+  // The goals of issue 25 for the apertures (mean of issue 17), and the same for the others;
+  // a point's visibility (the mean over the lightsphere's 18 directions) may differ by one
+  // direction: the CAD part on 4 ranks has two such points, on a face that rays graze.
+  const std::vector<std::vector<Compared>> compared = {
+    { { "ApertureRadius", 0, 0.01, 0.01, 0.05 }, { "AmbientOcclusion", 0, 0.01, 0.01, 0.05 } },
+    { { "ReferenceIrradiance", 0, 0.01, 0.01, 0.05 } },
+    { { "Visibility", -1, 0.01, 0.01, 1.0 / 18 + 1e-6 } }
+  };
   for (size_t f = 0; f < outputs.size(); ++f)
   {
     if (rank > 0)
@@ -334,21 +405,32 @@ int main(int argc, char* argv[])
     controller->Finalize();
     return 1;
   }
-  vtkSmartPointer<vtkPolyData> bunny = ReadBunny(argv[1]);
-  // Unlimited rays, and rays of a tenth of the bunny's size (only the cells that near another
-  // rank's piece travel then).
+  bool ok = true;
   const double unlimited = VTK_DOUBLE_MAX;
-  const double bounded = 0.1 * bunny->GetLength();
-  std::vector<vtkSmartPointer<vtkPolyData>> serial, serialBounded;
-  if (rank == 0)
+  for (const bool cad : { false, true })
   {
-    vtkSmartPointer<vtkPolyData> whole = Piece(bunny, 0, 1, true); // cleaned as the pieces are
-    serial = Run(whole, 0, 1, unlimited);
-    serialBounded = Run(whole, 0, 1, bounded);
+    vtkSmartPointer<vtkPolyData> surface = cad ? CadPart() : ReadBunny(argv[1]);
+    const std::string name = cad ? "CAD part" : "bunny";
+    // Unlimited rays, and rays of a tenth of the surface's size (only the cells that near
+    // another rank's piece travel then).
+    const double bounded = 0.1 * surface->GetLength();
+    std::vector<vtkSmartPointer<vtkPolyData>> serial, serialBounded;
+    if (rank == 0)
+    {
+      vtkSmartPointer<vtkPolyData> whole = Piece(surface, 0, 1, true); // cleaned as pieces are
+      serial = Run(whole, 0, 1, unlimited);
+      serialBounded = Run(whole, 0, 1, bounded);
+    }
+    ok =
+      Distributed(controller, surface, serial, false, unlimited, (name + ", slabs").c_str()) && ok;
+    ok = Distributed(controller, surface, serialBounded, false, bounded,
+           (name + ", slabs, bounded rays").c_str()) &&
+      ok;
+    if (!cad)
+    {
+      ok = Distributed(controller, surface, serial, true, unlimited, "bunny, one rank") && ok;
+    }
   }
-  bool ok = Distributed(controller, bunny, serial, false, unlimited, "slabs");
-  ok = Distributed(controller, bunny, serialBounded, false, bounded, "slabs, bounded rays") && ok;
-  ok = Distributed(controller, bunny, serial, true, unlimited, "one rank") && ok;
   ok = DistributedHeightField(controller, argv[1], unlimited, "height field") && ok;
   ok = DistributedHeightField(controller, argv[1], 3000.0, "height field, 3 km halo") && ok;
   controller->Finalize();
