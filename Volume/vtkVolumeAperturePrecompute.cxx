@@ -17,7 +17,7 @@
 #include "vtkMatrix3x3.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
-#include "vtkSMPTools.h"
+#include "vtkApertureSMP.h"
 #include "vtkSphericalCap.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkVolumeExtinction.h"
@@ -167,7 +167,7 @@ void ApertureSweeps::SweepSlice(const Layout& l, int k, const double omega[3],
   const float wy = static_cast<float>(omega[1]);
   const float wz = static_cast<float>(omega[2]);
   const vtkIdType base = k * this->Strides[l.M];
-  vtkSMPTools::For(0, nb, [&](int beginB, int endB) {
+  vtkApertureSMP::For(0, nb, [&](int beginB, int endB) {
     for (int ib = beginB; ib < endB; ++ib)
     {
       // The ray's next point in the previous slice, (ia + da, ib + db), padded.
@@ -213,7 +213,7 @@ void ApertureSweeps::Write(vtkImageData* output, const int outExt[6], const int 
   const double cell = 4.0 * Pi / directions;
   const int outDims[3] = { outExt[1] - outExt[0] + 1, outExt[3] - outExt[2] + 1,
     outExt[5] - outExt[4] + 1 };
-  vtkSMPTools::For(0, count, [&](vtkIdType begin, vtkIdType end) {
+  vtkApertureSMP::For(0, count, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
     {
       const int ijk[3] = { static_cast<int>(i % outDims[0]),

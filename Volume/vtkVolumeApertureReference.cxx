@@ -17,7 +17,7 @@
 #include "vtkMatrix3x3.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
-#include "vtkSMPTools.h"
+#include "vtkApertureSMP.h"
 #include "vtkSphericalCap.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkVolumeExtinction.h"
@@ -309,7 +309,7 @@ int vtkVolumeApertureReference::RequestData(
   const int outDims[3] = { outExt[1] - outExt[0] + 1, outExt[3] - outExt[2] + 1,
     outExt[5] - outExt[4] + 1 };
   const int samples = this->NumberOfSamples;
-  vtkSMPTools::For(0, count, [&](vtkIdType begin, vtkIdType end) {
+  vtkApertureSMP::For(0, count, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
     {
       const int ijk[3] = { static_cast<int>(i % outDims[0]),

@@ -17,7 +17,7 @@
 #include "vtkImageData.h"
 #include "vtkMatrix3x3.h"
 #include "vtkPiecewiseFunction.h"
-#include "vtkSMPTools.h"
+#include "vtkApertureSMP.h"
 #include "vtkVolumeProperty.h"
 
 #include <algorithm>
@@ -54,7 +54,7 @@ struct SigmaWorker
   {
     const auto values = vtk::DataArrayValueRange<1>(array);
     const std::vector<double>& table = *this->Table;
-    vtkSMPTools::For(0, values.size(), [&](vtkIdType begin, vtkIdType end) {
+    vtkApertureSMP::For(0, values.size(), [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType i = begin; i < end; ++i)
       {
         const double x = std::min(std::max((values[i] - this->Low) * this->Scale, 0.0),
@@ -111,7 +111,7 @@ std::vector<float> DecimateAxis(
   const vtkIdType lines = vtkIdType(dims[0]) * dims[1] * dims[2] / n;
   const std::vector<double> weights = TentWeights(step);
   std::vector<float> result(static_cast<size_t>(lines * m));
-  vtkSMPTools::For(0, lines, [&](vtkIdType begin, vtkIdType end) {
+  vtkApertureSMP::For(0, lines, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType line = begin; line < end; ++line)
     {
       // The line's first sample, in and out: the other two indices are kept.

@@ -10,6 +10,7 @@
 =========================================================================*/
 #include "vtkEnvironmentMap.h"
 
+#include "vtkApertureSMP.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
@@ -17,7 +18,6 @@
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
-#include "vtkSMPTools.h"
 
 #include <algorithm>
 #include <cmath>
@@ -337,7 +337,7 @@ void vtkEnvironmentMap::Blur()
   const std::vector<float> sharp = this->Working;
   const double* directions = this->PixelDirections.data();
   const int band = static_cast<int>(std::ceil(4.0 * sigma / (Pi / h)));
-  vtkSMPTools::For(0, h,
+  vtkApertureSMP::For(0, h,
     [&](vtkIdType first, vtkIdType last)
     {
       for (int row = static_cast<int>(first); row < last; ++row)
@@ -441,7 +441,7 @@ void vtkEnvironmentMap::CellRadiance(vtkDoubleArray* directions, vtkDoubleArray*
   }
   const int w = WorkingWidth, h = WorkingHeight;
   std::vector<int> nearest(static_cast<size_t>(w) * h);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(w) * h,
+  vtkApertureSMP::For(0, static_cast<vtkIdType>(w) * h,
     [&](vtkIdType first, vtkIdType last)
     {
       for (vtkIdType p = first; p < last; ++p)
@@ -574,7 +574,7 @@ vtkImageData* vtkEnvironmentMap::NewCapTable(int columns, int rows, int radii)
   float* out = values->GetPointer(0);
   // For each axis, every pixel within pi/2 adds to the first radius that contains it; the sums
   // then accumulate over the radii.
-  vtkSMPTools::For(0, static_cast<vtkIdType>(columns) * rows,
+  vtkApertureSMP::For(0, static_cast<vtkIdType>(columns) * rows,
     [&](vtkIdType first, vtkIdType last)
     {
       std::vector<double> bins(3 * radii);

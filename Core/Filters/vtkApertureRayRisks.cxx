@@ -11,8 +11,8 @@
 #include "vtkApertureRayRisks.h"
 
 #include "vtkApertureRayOffsets.h"
+#include "vtkApertureSMP.h"
 #include "vtkApertureSurface.h"
-#include "vtkSMPTools.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -183,7 +183,7 @@ std::vector<unsigned char> vtkApertureRayRisks::Find(
   {
     this->MarkIncident(surface, risky);
   }
-  vtkSMPTools::For(0, triangles, 1024,
+  vtkApertureSMP::For(0, triangles, 1024,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType t = begin; t < end; ++t)

@@ -43,7 +43,7 @@
 #define vtkApertureRayScene_h
 
 #include "vtkApertureLightingCoreModule.h" // For export macro
-#include "vtkSMPTools.h"                   // For TraceInBatches()
+#include "vtkApertureSMP.h"                // For TraceInBatches()
 #include "vtkType.h"
 
 #include <embree3/rtcore.h>
@@ -158,7 +158,7 @@ public:
     for (vtkIdType first = 0; first < n; first += batch)
     {
       const vtkIdType last = first + batch < n ? first + batch : n;
-      vtkSMPTools::For(first, last, grain, trace);
+      vtkApertureSMP::For(first, last, grain, trace);
       if (!progress(last))
       {
         break;

@@ -12,6 +12,7 @@
 
 #include "vtkApertureRaySampler.h"
 
+#include "vtkApertureSMP.h"
 #include "vtkArrayDispatch.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -22,7 +23,6 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkSMPTools.h"
 
 #include <algorithm>
 #include <cmath>
@@ -118,7 +118,7 @@ void vtkApertureSurface::WorldPoints(vtkPoints* points, std::vector<double>& wor
   auto copy = [&world](auto* array)
   {
     const auto tuples = vtk::DataArrayTupleRange<3>(array);
-    vtkSMPTools::For(0, tuples.size(),
+    vtkApertureSMP::For(0, tuples.size(),
       [&](vtkIdType first, vtkIdType last)
       {
         for (vtkIdType i = first; i < last; ++i)

@@ -11,6 +11,7 @@
 #include "vtkEnvironmentVisibilityLighting.h"
 #include "vtkApertureDistributedOccluders.h"
 
+#include "vtkApertureSMP.h"
 #include "vtkBitArray.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -25,7 +26,6 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
@@ -180,7 +180,7 @@ void Relight(const Visibility& v, const std::vector<float>& radiance, std::vecto
     std::copy(l, l + 3, &unit[3 * j]);
   }
   linear.assign(3 * v.N, 0.0f);
-  vtkSMPTools::For(0, v.N,
+  vtkApertureSMP::For(0, v.N,
     [&](vtkIdType first, vtkIdType last)
     {
       std::vector<float> row(v.K);
@@ -218,7 +218,7 @@ vtkSmartPointer<vtkUnsignedCharArray> ToneMap(
   colors->SetNumberOfTuples(static_cast<vtkIdType>(linear.size() / 3));
   const double scale = std::pow(2.0, exposure), inverseGamma = 1.0 / gamma;
   unsigned char* rgb = colors->GetPointer(0);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(linear.size()),
+  vtkApertureSMP::For(0, static_cast<vtkIdType>(linear.size()),
     [&](vtkIdType first, vtkIdType last)
     {
       for (vtkIdType v = first; v < last; ++v)

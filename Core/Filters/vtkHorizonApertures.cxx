@@ -13,9 +13,9 @@
 #include "vtkApertureMemory.h"
 #include "vtkSphericalCap.h"
 
+#include "vtkApertureSMP.h"
 #include "vtkMath.h"
 #include "vtkSMPThreadLocal.h"
-#include "vtkSMPTools.h"
 
 #include <algorithm>
 #include <cmath>
@@ -145,7 +145,7 @@ void TexelNormal(const Field& f, vtkIdType i, vtkIdType j, double n[3])
 // Normals and valid flags of the output extent; (0, 0, 1) for no-data texels.
 void ComputeNormals(const Field& f, float* normals, unsigned char* valid)
 {
-  vtkSMPTools::For(0, f.OutNy,
+  vtkApertureSMP::For(0, f.OutNy,
     [&](vtkIdType first, vtkIdType last)
     {
       for (vtkIdType row = first; row < last; ++row)
@@ -705,7 +705,7 @@ void SweepSector(
 {
   const vtkIdType groups = (lines.LastLine - lines.FirstLine + LinesPerGroup) / LinesPerGroup;
   vtkSMPThreadLocal<Scratch> scratch;
-  vtkSMPTools::For(0, groups, 1,
+  vtkApertureSMP::For(0, groups, 1,
     [&](vtkIdType begin, vtkIdType end)
     {
       Scratch& s = scratch.Local();
@@ -773,7 +773,7 @@ public:
       }
     }
     // Texel by texel, so that each record is written once per flush.
-    vtkSMPTools::For(0, this->Texels,
+    vtkApertureSMP::For(0, this->Texels,
       [&](vtkIdType begin, vtkIdType end)
       {
         for (vtkIdType o = begin; o < end; ++o)
@@ -929,7 +929,7 @@ void FinishProducts(const vtkHorizonApertures::Buffers& out, vtkIdType o, unsign
 void Finish(const vtkHorizonApertures::Buffers& out, vtkIdType texels, int sectors,
   const unsigned short* sampled)
 {
-  vtkSMPTools::For(0, texels,
+  vtkApertureSMP::For(0, texels,
     [&](vtkIdType first, vtkIdType last)
     {
       for (vtkIdType o = first; o < last; ++o)

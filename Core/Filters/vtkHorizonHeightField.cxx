@@ -15,6 +15,7 @@
 #include "vtkHorizonApertures.h"
 #include "vtkHorizonLighting.h"
 
+#include "vtkApertureSMP.h"
 #include "vtkArrayDispatch.h"
 #include "vtkDataArray.h"
 #include "vtkDataArrayRange.h"
@@ -25,7 +26,6 @@
 #include "vtkMatrix3x3.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
-#include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -92,7 +92,7 @@ struct CopyWindowWorker
     const vtkIdType nx = this->Window[1] - this->Window[0] + 1;
     const vtkIdType ny = this->Window[3] - this->Window[2] + 1;
     this->Out.resize(nx * ny);
-    vtkSMPTools::For(0, ny,
+    vtkApertureSMP::For(0, ny,
       [&](vtkIdType first, vtkIdType last)
       {
         for (vtkIdType r = first; r < last; ++r)
@@ -169,7 +169,7 @@ void ToWorld(vtkImageData* image, float* vectors, vtkIdType n)
   {
     return;
   }
-  vtkSMPTools::For(0, n,
+  vtkApertureSMP::For(0, n,
     [&](vtkIdType first, vtkIdType last)
     {
       for (vtkIdType i = first; i < last; ++i)
@@ -296,7 +296,7 @@ void TreatNoData(
     s.Z.assign(grid.Heights, grid.Heights + n);
   }
   const double wall = std::isfinite(settings.WallHeight) ? settings.WallHeight : highest;
-  vtkSMPTools::For(0, n,
+  vtkApertureSMP::For(0, n,
     [&](vtkIdType first, vtkIdType last)
     {
       for (vtkIdType t = first; t < last; ++t)

@@ -17,6 +17,7 @@
 #include "vtkLightSphere.h"
 #include "vtkRayCastVisibility.h"
 
+#include "vtkApertureSMP.h"
 #include "vtkBitArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -28,7 +29,6 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -292,7 +292,7 @@ vtkSmartPointer<vtkFloatArray> VisibilityArray(const Sees& sees, vtkIdType m, in
   visibility->SetNumberOfComponents(k);
   visibility->SetNumberOfTuples(m);
   float* values = visibility->GetPointer(0);
-  vtkSMPTools::For(0, m,
+  vtkApertureSMP::For(0, m,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType o = begin; o < end; ++o)

@@ -12,9 +12,9 @@
 
 #include "vtkApertureRayPacket.h"
 #include "vtkApertureRayScene.h"
+#include "vtkApertureSMP.h"
 #include "vtkApertureSurface.h"
 #include "vtkMortonOrder.h"
-#include "vtkSMPTools.h"
 
 #include <algorithm>
 #include <cmath>
@@ -156,7 +156,8 @@ bool vtkRayCastVisibility::Cast(const std::vector<std::array<double, 3>>& direct
     const std::vector<std::array<double, 3>> chunk(
       directions.begin() + begin, directions.begin() + std::min(directions.size(), begin + Chunk));
     std::vector<Bits> ordered(chunk.size(), Bits(blocks, 0));
-    vtkSMPTools::For(0, blocks, 4, CastDirections(receivers, order, *this->Scene, chunk, ordered));
+    vtkApertureSMP::For(
+      0, blocks, 4, CastDirections(receivers, order, *this->Scene, chunk, ordered));
     // From Morton order back to receiving points.
     for (size_t j = 0; j < chunk.size(); ++j)
     {

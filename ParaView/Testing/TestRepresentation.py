@@ -18,8 +18,7 @@ import sys
 
 import numpy as np
 import paraview.simple as pvs
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOImage import vtkPNGReader
+from aperture_test_data import read_png
 
 FAILURES = []
 
@@ -28,16 +27,6 @@ def check(ok, what):
     print(("ok   " if ok else "FAIL ") + what)
     if not ok:
         FAILURES.append(what)
-
-
-def read_png(name):
-    reader = vtkPNGReader()
-    reader.SetFileName(name)
-    reader.Update()
-    image = reader.GetOutput()
-    width, height, _ = image.GetDimensions()
-    pixels = vtk_to_numpy(image.GetPointData().GetScalars())
-    return pixels.reshape(height, width, -1)[:, :, :3].astype(float)
 
 
 def shot(view, work, name):

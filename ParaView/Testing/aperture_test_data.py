@@ -1,6 +1,20 @@
-"""Test data the plugin's tests write themselves."""
+"""Test data the plugin's tests write themselves, and the pictures they read back."""
 
 import math
+
+
+def read_png(path):
+    """A PNG's RGB pixels as floats (height x width x 3)."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkIOImage import vtkPNGReader
+
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    width, height, _ = image.GetDimensions()
+    pixels = vtk_to_numpy(image.GetPointData().GetScalars())
+    return pixels.reshape(height, width, -1)[:, :, :3].astype(float)
 
 
 def write_valley(path, n=48, slope=0.3, cell=10.0):
@@ -13,3 +27,54 @@ def write_valley(path, n=48, slope=0.3, cell=10.0):
             f.write(" ".join(f"{slope * cell * math.hypot(col - n / 2, row - n / 2):.2f}"
                              for col in range(n)) + "\n")
     return math.pi / 2 - math.atan(slope)
+
+
+def write_cad_part(path):
+    """A CAD part as a .vtp file: an L-shaped bracket (an extruded profile) with a cylindrical
+    boss standing on its foot, each faceted as an STL file is (faces meeting at a crease share
+    their points) and subdivided; 90-degree creases, concave corners and a contact."""
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+    from vtkmodules.vtkFiltersCore import vtkAppendPolyData, vtkCleanPolyData, vtkTriangleFilter
+    from vtkmodules.vtkFiltersModeling import (vtkLinearExtrusionFilter,
+                                               vtkLinearSubdivisionFilter)
+    from vtkmodules.vtkFiltersSources import vtkCylinderSource
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+
+    def faceted(source, levels):
+        triangles = vtkTriangleFilter()
+        triangles.SetInputConnection(source.GetOutputPort())
+        merged = vtkCleanPolyData()
+        merged.SetInputConnection(triangles.GetOutputPort())
+        subdivided = vtkLinearSubdivisionFilter()
+        subdivided.SetInputConnection(merged.GetOutputPort())
+        subdivided.SetNumberOfSubdivisions(levels)
+        subdivided.Update()
+        return subdivided.GetOutput()
+
+    profile = vtkPolyData()
+    corners = vtkPoints()
+    for x, y in ((0, 0), (4, 0), (4, 1), (1, 1), (1, 3), (0, 3)):
+        corners.InsertNextPoint(x, y, 0.0)
+    polygon = vtkCellArray()
+    polygon.InsertNextCell(6, range(6))
+    profile.SetPoints(corners)
+    profile.SetPolys(polygon)
+    bracket = vtkLinearExtrusionFilter()
+    bracket.SetInputData(profile)
+    bracket.SetExtrusionTypeToVectorExtrusion()
+    bracket.SetVector(0.0, 0.0, 2.0)
+    bracket.CappingOn()
+    boss = vtkCylinderSource()  # along y, standing on the foot's top (y = 1)
+    boss.SetRadius(0.5)
+    boss.SetHeight(1.0)
+    boss.SetCenter(2.5, 1.5, 1.0)
+    boss.SetResolution(24)
+    part = vtkAppendPolyData()
+    part.AddInputData(faceted(bracket, 3))
+    part.AddInputData(faceted(boss, 2))
+    part.Update()
+    writer = vtkXMLPolyDataWriter()
+    writer.SetFileName(path)
+    writer.SetInputData(part.GetOutput())
+    writer.Write()
