@@ -12,6 +12,7 @@
 
 #include "vtkApertureCellCheck.h"
 #include "vtkApertureDistributedOccluders.h"
+#include "vtkApertureHistory.h"
 #include "vtkApertureRayPacket.h"
 #include "vtkApertureRaySampler.h"
 #include "vtkApertureRayScene.h"
@@ -29,6 +30,7 @@
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataSetAttributes.h"
+#include "vtkDemandDrivenPipeline.h"
 #include "vtkExtentTranslator.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -49,6 +51,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <sstream>
 #include <vector>
 
 vtkStandardNewMacro(vtkAperturePrecompute);
@@ -58,12 +61,7 @@ namespace
 constexpr double Pi = vtkMath::Pi();
 constexpr int Lanes = vtkApertureRayPacket::Lanes;
 
-// The caps of a surface's receiving points, and their visibility masks.
-struct Caps
-{
-  std::vector<float> BentNormal, Radius, Occlusion;
-  std::vector<unsigned char> Mask;
-};
+using Caps = vtkApertureHistory::Caps;
 
 // What the mask asks for: its grid's side (0 for no mask) and rays per cell along a side.
 struct MaskSettings
@@ -72,13 +70,14 @@ struct MaskSettings
   int RaysSide = 1;
 };
 
-// Casts the rays of a range of receiving points of one surface and writes their caps.
+// Casts the rays of a range of the `needed` receiving points of one surface (all when empty),
+// in Morton order, and writes their caps.
 class CastRays
 {
 public:
   CastRays(const vtkApertureSurface& surface, const vtkApertureRayScene& scene,
     const vtkApertureRaySampler& sampler, float maximumDistance, const MaskSettings& mask,
-    Caps& caps)
+    const std::vector<unsigned char>& needed, Caps& caps)
     : Surface(surface)
     , Scene(scene)
     , Sampler(sampler)
@@ -92,7 +91,15 @@ public:
       std::copy_n(surface.GetPosition(i), 3, &positions[3 * i]);
     }
     this->Order = vtkMortonOrder::Order(positions.data(), surface.GetNumberOfPoints());
+    if (!needed.empty())
+    {
+      this->Order.erase(std::remove_if(this->Order.begin(), this->Order.end(),
+                          [&needed](std::uint32_t id) { return !needed[id]; }),
+        this->Order.end());
+    }
   }
+
+  vtkIdType GetNumberOfPoints() const { return static_cast<vtkIdType>(this->Order.size()); }
 
   void operator()(vtkIdType begin, vtkIdType end) const
   {
@@ -276,10 +283,14 @@ public:
   void CollectOccluders(vtkInformationVector* occluderInfo);
   bool ChooseMethod();
   bool SweepHorizons(const int extent[6]);
+  bool FindTimeStep(vtkDataObject* input, vtkDataObject* output);
+  void StoreTimeStep(vtkDataObject* output);
   bool Refine();
   bool BuildSurfaces();
+  void PlanReuse();
   bool BuildScene();
   bool Cast();
+  void Remember();
   void WriteOutputs(const int* extent);
   void Warn();
 
@@ -295,6 +306,14 @@ public:
   vtkIdType NoData = 0;
   bool Horizons = false;
   bool Aborted = false;
+  // A time step: its time, and the input pipeline's modification time.
+  bool Temporal = false;
+  double Time = 0.0;
+  vtkMTimeType Pipeline = 0;
+  // A moving surface: its input's coordinates and which receiving points cast rays.
+  bool Reusable = false;
+  std::vector<double> World;
+  std::vector<unsigned char> Needed;
 };
 
 //------------------------------------------------------------------------------
@@ -436,6 +455,54 @@ void vtkAperturePrecompute::vtkRun::CollectOccluders(vtkInformationVector* occlu
     {
       this->Occluders.push_back(this->RemoteOccluders);
     }
+  }
+}
+
+//------------------------------------------------------------------------------
+// A time step computed before (serial runs): its output, and true. Empties what earlier updates
+// kept when the settings or the occluders changed.
+bool vtkAperturePrecompute::vtkRun::FindTimeStep(vtkDataObject* input, vtkDataObject* output)
+{
+  vtkAperturePrecompute* self = this->Self;
+  self->LastUpdate = COMPUTED;
+  self->NumberOfReusedPoints = 0;
+  // The settings' values, not the filter's modification time: a new input connection or
+  // input data modifies the filter, and is what a time series or a moving surface brings.
+  std::ostringstream key;
+  key.precision(17);
+  self->PrintSettings(key, vtkIndent());
+  for (vtkPolyData* occluder : this->Occluders)
+  {
+    key << occluder << " " << occluder->GetMTime() << "\n";
+  }
+  self->History->SetKey(key.str());
+  vtkInformation* info = input->GetInformation();
+  this->Temporal =
+    !this->Distributed && self->TimeStepCacheSize > 0 && info->Has(vtkDataObject::DATA_TIME_STEP());
+  if (!this->Temporal)
+  {
+    return false;
+  }
+  this->Time = info->Get(vtkDataObject::DATA_TIME_STEP());
+  auto* executive = vtkDemandDrivenPipeline::SafeDownCast(self->GetInputExecutive(0, 0));
+  this->Pipeline = executive ? executive->GetPipelineMTime() : input->GetMTime();
+  vtkDataObject* step = self->History->Find(this->Time, this->Pipeline);
+  if (step)
+  {
+    output->ShallowCopy(step);
+    self->LastUpdate = CACHED_TIME_STEP;
+    self->NumberOfSurfacePoints = 0;
+    self->NumberOfReusedPoints = 0;
+  }
+  return step != nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkAperturePrecompute::vtkRun::StoreTimeStep(vtkDataObject* output)
+{
+  if (this->Temporal)
+  {
+    this->Self->History->Store(this->Time, this->Pipeline, output, this->Self->TimeStepCacheSize);
   }
 }
 
@@ -592,7 +659,53 @@ bool vtkAperturePrecompute::vtkRun::BuildSurfaces()
     vtkErrorWithObjectMacro(self, << error);
     return false;
   }
+  for (size_t i = 0; i < this->Receivers.size() && self->KeyRaysByPointId; ++i)
+  {
+    vtkDataSet* source = this->Receivers[i]->Source();
+    vtkDataArray* ids = source->GetPointData()->GetGlobalIds();
+    const bool fits = ids && ids->GetNumberOfComponents() == 1 &&
+      ids->GetNumberOfTuples() == source->GetNumberOfPoints();
+    this->Receivers[i]->Surface.KeyByPointIds(fits ? ids : nullptr);
+  }
   return true;
+}
+
+//------------------------------------------------------------------------------
+// A moving surface: which receiving points cast rays again. All of them, unless the last
+// update's surface had the same cells (one polydata, serial, not refined) and the reach of
+// the rays is bounded.
+void vtkAperturePrecompute::vtkRun::PlanReuse()
+{
+  vtkAperturePrecompute* self = this->Self;
+  Receiver* r = this->Receivers.size() == 1 ? this->Receivers[0].get() : nullptr;
+  auto* poly = r && !r->Refined ? vtkPolyData::SafeDownCast(r->Input) : nullptr;
+  this->Reusable = self->ReuseUnmovedPoints && poly && !this->Distributed;
+  if (!this->Reusable)
+  {
+    return;
+  }
+  vtkApertureSurface::WorldPoints(poly->GetPoints(), this->World);
+  if (vtkDataArray* normals = vtkApertureSurface::GivenNormals(poly))
+  {
+    // A turned normal changes its point's caps as a move does.
+    std::vector<double> both(2 * this->World.size());
+    for (vtkIdType i = 0; i < poly->GetNumberOfPoints(); ++i)
+    {
+      std::copy_n(&this->World[3 * i], 3, &both[6 * i]);
+      normals->GetTuple(i, &both[6 * i + 3]);
+    }
+    this->World.swap(both);
+  }
+  const std::vector<float>& offsets = r->Surface.Offset;
+  const double offset = offsets.empty() ? 0.0 : *std::max_element(offsets.begin(), offsets.end());
+  // A ray starts up to 2 offsets from its point, and is traced from a quarter offset behind.
+  const double reach = self->SearchDistance() + 3.0 * offset;
+  this->Needed = self->History->Needed(r->Surface, this->World, reach);
+  if (self->History->HasSurface())
+  {
+    self->LastUpdate = self->History->SameCells(r->Surface) ? MOVED_POINTS : NEW_TOPOLOGY;
+  }
+  self->NumberOfReusedPoints = std::count(this->Needed.begin(), this->Needed.end(), 0);
 }
 
 //------------------------------------------------------------------------------
@@ -637,6 +750,10 @@ bool vtkAperturePrecompute::vtkRun::Cast()
   {
     casting += r->Surface.GetNumberOfPoints();
   }
+  if (this->Reusable)
+  {
+    casting = std::count(this->Needed.begin(), this->Needed.end(), 1);
+  }
   self->NumberOfSurfacePoints = casting;
   vtkIdType done = 0;
   self->UpdateProgress(0.0);
@@ -648,13 +765,14 @@ bool vtkAperturePrecompute::vtkRun::Cast()
     r->Results.Radius.resize(n);
     r->Results.Occlusion.assign(self->ComputeAmbientOcclusion ? n : 0, 0.0f);
     r->Results.Mask.assign(mask.Side > 0 ? n * mask.Side * mask.Side / 8 : 0, 0);
-    const CastRays cast(r->Surface, this->Scene, sampler, maximumDistance, mask, r->Results);
+    const CastRays cast(r->Surface, this->Scene, sampler, maximumDistance, mask,
+      this->Reusable ? this->Needed : std::vector<unsigned char>(), r->Results);
     auto progress = [&](vtkIdType traced)
     {
       self->UpdateProgress(static_cast<double>(done + traced) / std::max<vtkIdType>(casting, 1));
       return !self->GetAbortExecute();
     };
-    if (!this->Scene.TraceInBatches(n, batch, 16, cast, progress, error))
+    if (!this->Scene.TraceInBatches(cast.GetNumberOfPoints(), batch, 16, cast, progress, error))
     {
       vtkErrorWithObjectMacro(self, "Embree failed while tracing: " << error);
       return false;
@@ -664,9 +782,25 @@ bool vtkAperturePrecompute::vtkRun::Cast()
     {
       return true;
     }
-    done += n;
+    done += cast.GetNumberOfPoints();
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+// A moving surface of fixed cells: the caps of the points that did not cast rays again, and
+// this update's surface for the next.
+void vtkAperturePrecompute::vtkRun::Remember()
+{
+  vtkApertureHistory& history = *this->Self->History;
+  if (!this->Reusable)
+  {
+    history.Forget();
+    return;
+  }
+  Receiver& r = *this->Receivers[0];
+  history.Reuse(r.Results);
+  history.Remember(r.Surface, std::move(this->World), r.Results);
 }
 
 //------------------------------------------------------------------------------
@@ -771,6 +905,7 @@ vtkAperturePrecompute::vtkAperturePrecompute()
   this->SetInputArrayToProcess(
     0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
   this->SetController(vtkMultiProcessController::GetGlobalController());
+  this->History.reset(new vtkApertureHistory);
 }
 
 //------------------------------------------------------------------------------
@@ -900,6 +1035,10 @@ int vtkAperturePrecompute::RequestData(
   vtkRun run(this, vtkApertureDistributedOccluders::IsDistributed(this->Controller, outInfo));
   bool ok = run.CollectReceivers(input, output);
   run.CollectOccluders(inputVector[1]);
+  if (ok && run.FindTimeStep(input, output))
+  {
+    return 1;
+  }
   ok = ok && run.CheckReceivers();
   if (ok && run.EmptyPiece)
   {
@@ -917,9 +1056,15 @@ int vtkAperturePrecompute::RequestData(
   {
     // 2. The surfaces (refined, welded, split at creases), one Embree scene, and the rays of
     // every receiving point; the caps on the output's points.
-    ok = run.Refine() && run.BuildSurfaces() && run.BuildScene() && run.Cast();
+    ok = run.Refine() && run.BuildSurfaces();
+    if (ok)
+    {
+      run.PlanReuse();
+    }
+    ok = ok && run.BuildScene() && run.Cast();
     if (ok && !run.Aborted)
     {
+      run.Remember();
       run.WriteOutputs(extent);
     }
   }
@@ -928,8 +1073,9 @@ int vtkAperturePrecompute::RequestData(
     output->Initialize();
     return ok ? 1 : 0;
   }
-  // 3. What the caps could not be computed for.
+  // 3. What the caps could not be computed for; the step for a later visit.
   run.Warn();
+  run.StoreTimeStep(output);
   return 1;
 }
 
@@ -943,6 +1089,20 @@ double vtkAperturePrecompute::SearchDistance() const
 void vtkAperturePrecompute::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  this->PrintSettings(os, indent);
+  os << indent << "UsedHorizons: " << this->UsedHorizons << "\n";
+  os << indent << "NumberOfOccluders: " << this->GetNumberOfInputConnections(1) << "\n";
+  os << indent << "Controller: " << this->Controller << "\n";
+  os << indent << "NumberOfSurfacePoints: " << this->NumberOfSurfacePoints << "\n";
+  static const char* const updates[] = { "Computed", "CachedTimeStep", "MovedPoints",
+    "NewTopology" };
+  os << indent << "LastUpdate: " << updates[this->LastUpdate] << "\n";
+  os << indent << "NumberOfReusedPoints: " << this->NumberOfReusedPoints << "\n";
+}
+
+//------------------------------------------------------------------------------
+void vtkAperturePrecompute::PrintSettings(ostream& os, vtkIndent indent)
+{
   static const char* const structures[] = { "Automatic", "Compact", "Fast" };
   os << indent << "NumberOfRays: " << this->NumberOfRays << "\n";
   os << indent << "LimitDistance: " << (this->LimitDistance ? "On" : "Off") << "\n";
@@ -951,6 +1111,11 @@ void vtkAperturePrecompute::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Seed: " << this->Seed << "\n";
   os << indent << "Sampling: " << (this->Sampling == RANDOM ? "Random" : "Stratified") << "\n";
   os << indent << "HeightScale: " << this->HeightScale << "\n";
+  vtkInformation* heights = this->GetInputArrayInformation(0);
+  os << indent << "Heights: "
+     << (heights->Has(vtkDataObject::FIELD_NAME()) ? heights->Get(vtkDataObject::FIELD_NAME())
+                                                   : "(scalars)")
+     << "\n";
   os << indent << "ComputeAmbientOcclusion: " << this->ComputeAmbientOcclusion << "\n";
   os << indent << "ComputeHorizonAngles: " << this->ComputeHorizonAngles << "\n";
   os << indent << "ComputeSkyViewFactor: " << this->ComputeSkyViewFactor << "\n";
@@ -976,9 +1141,8 @@ void vtkAperturePrecompute::PrintSelf(ostream& os, vtkIndent indent)
   static const char* const methods[] = { "HorizonsForHeightFields", "Rays", "Horizons" };
   os << indent << "Method: " << methods[this->Method] << "\n";
   os << indent << "NumberOfSectors: " << this->NumberOfSectors << "\n";
-  os << indent << "UsedHorizons: " << this->UsedHorizons << "\n";
   os << indent << "EmbreeConfiguration: " << this->EmbreeConfiguration << "\n";
-  os << indent << "NumberOfOccluders: " << this->GetNumberOfInputConnections(1) << "\n";
-  os << indent << "Controller: " << this->Controller << "\n";
-  os << indent << "NumberOfSurfacePoints: " << this->NumberOfSurfacePoints << "\n";
+  os << indent << "TimeStepCacheSize: " << this->TimeStepCacheSize << "\n";
+  os << indent << "ReuseUnmovedPoints: " << (this->ReuseUnmovedPoints ? "On" : "Off") << "\n";
+  os << indent << "KeyRaysByPointId: " << (this->KeyRaysByPointId ? "On" : "Off") << "\n";
 }

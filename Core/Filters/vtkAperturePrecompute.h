@@ -83,8 +83,10 @@
 #include "vtkPassInputTypeAlgorithm.h"
 
 #include <limits> // For std::numeric_limits
+#include <memory> // For std::unique_ptr
 #include <string> // For std::string
 
+class vtkApertureHistory;
 class vtkMultiProcessController;
 
 class VTKAPERTURELIGHTINGCORE_EXPORT vtkAperturePrecompute : public vtkPassInputTypeAlgorithm
@@ -412,9 +414,67 @@ public:
   /**
    * The surface points that cast rays in the last update, NumberOfRays each: one per position
    * and side of a crease (points welded together cast once), or per texel; 0 after horizon
-   * sweeps.
+   * sweeps, after a time step found in the cache, and for the points whose caps were reused.
    */
   vtkGetMacro(NumberOfSurfacePoints, vtkIdType);
+
+  ///@{
+  /**
+   * Time series. A temporal input passes its time steps through. The outputs of the last
+   * TimeStepCacheSize steps (default 16; 0 keeps none) are kept, by the input's time
+   * (vtkDataObject::DATA_TIME_STEP): a second visit to a step is a lookup, as long as neither
+   * the filter's settings nor anything upstream but the time changed. Each kept step holds its
+   * output's new arrays.
+   */
+  vtkSetClampMacro(TimeStepCacheSize, int, 0, 1024);
+  vtkGetMacro(TimeStepCacheSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * A surface that moves (its points, not its cells): when an update's polydata has the same
+   * cells and points as the last one's, only the receiving points within reach of a triangle
+   * that moved (MaximumDistance plus the rays' offsets, where the triangle was or where it is)
+   * cast rays again; the others keep their caps. Needs LimitDistance (unbounded rays can see
+   * any motion). Serial runs of one polydata without refinement only. Default off: the filter
+   * then keeps the last surface's triangles, coordinates and caps (about 70 bytes a point).
+   */
+  vtkSetMacro(ReuseUnmovedPoints, bool);
+  vtkGetMacro(ReuseUnmovedPoints, bool);
+  vtkBooleanMacro(ReuseUnmovedPoints, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Whether a point's rays follow its id instead of its position (default off): the global id
+   * (vtkPointData::GetGlobalIds()) of the first input point at its position, or that point's
+   * index, and its side at a crease. A point that moves keeps its rays, so that an animation
+   * does not flicker with sampling noise. Keyed by position, welded and unwelded copies of a
+   * mesh get the same rays; keyed by index they do not, and pieces of a distributed run need
+   * global ids to match a serial run.
+   */
+  vtkSetMacro(KeyRaysByPointId, bool);
+  vtkGetMacro(KeyRaysByPointId, bool);
+  vtkBooleanMacro(KeyRaysByPointId, bool);
+  ///@}
+
+  /**
+   * What the last update did: computed every point (COMPUTED), took the step from the time-step
+   * cache (CACHED_TIME_STEP), cast rays for the points near moved triangles only
+   * (MOVED_POINTS), or computed every point because the cells changed since the last update
+   * (NEW_TOPOLOGY: a rebuild, where a moving surface of fixed cells would reuse).
+   */
+  enum UpdateKinds
+  {
+    COMPUTED = 0,
+    CACHED_TIME_STEP = 1,
+    MOVED_POINTS = 2,
+    NEW_TOPOLOGY = 3
+  };
+  vtkGetMacro(LastUpdate, int);
+
+  /// Receiving points whose caps the last update reused (MOVED_POINTS).
+  vtkGetMacro(NumberOfReusedPoints, vtkIdType);
 
   ///@{
   /**
@@ -468,6 +528,11 @@ protected:
   int NumberOfSectors = 32;
   bool UsedHorizons = false;
   vtkIdType NumberOfSurfacePoints = 0;
+  int TimeStepCacheSize = 16;
+  bool ReuseUnmovedPoints = false;
+  bool KeyRaysByPointId = false;
+  int LastUpdate = COMPUTED;
+  vtkIdType NumberOfReusedPoints = 0;
   vtkMultiProcessController* Controller = nullptr;
   std::string BentNormalArrayName = "BentNormal";
   std::string ApertureRadiusArrayName = "ApertureRadius";
@@ -480,9 +545,13 @@ private:
   vtkAperturePrecompute(const vtkAperturePrecompute&) = delete;
   // MaximumDistance when LimitDistance is on, else VTK_DOUBLE_MAX.
   double SearchDistance() const;
+  // The settings' part of PrintSelf(): also the key of what earlier updates computed.
+  void PrintSettings(ostream& os, vtkIndent indent);
   void operator=(const vtkAperturePrecompute&) = delete;
 
   class vtkRun; // the steps of one RequestData
+  // What earlier updates computed: time steps, a moving surface's caps.
+  std::unique_ptr<vtkApertureHistory> History;
 };
 
 #endif

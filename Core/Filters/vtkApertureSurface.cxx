@@ -65,6 +65,37 @@ std::uint64_t vtkApertureSurface::PointKey(const double p[3], unsigned int side)
 }
 
 //------------------------------------------------------------------------------
+std::uint64_t vtkApertureSurface::IdKey(vtkIdType id, unsigned int side)
+{
+  // Apart from every position's key: a different first mix.
+  return vtkApertureRaySampler::Mix(
+    vtkApertureRaySampler::Mix(~std::uint64_t(side)) ^ static_cast<std::uint64_t>(id));
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureSurface::KeyByPointIds(vtkDataArray* globalIds)
+{
+  std::vector<vtkIdType> first(this->GetNumberOfVertices(), -1);
+  for (size_t i = 0; i < this->InputPoints.size(); ++i)
+  {
+    const vtkIdType point = this->InputPoints[i];
+    if (point >= 0 && first[this->PointVertex[point]] < 0)
+    {
+      first[this->PointVertex[point]] = globalIds
+        ? static_cast<vtkIdType>(globalIds->GetTuple1(static_cast<vtkIdType>(i)))
+        : static_cast<vtkIdType>(i);
+    }
+  }
+  // A vertex's sides are consecutive receiving points.
+  unsigned int side = 0;
+  for (size_t p = 0; p < this->PointVertex.size(); ++p)
+  {
+    side = p > 0 && this->PointVertex[p] == this->PointVertex[p - 1] ? side + 1 : 0;
+    this->Key[p] = IdKey(first[this->PointVertex[p]], side);
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkApertureSurface::InitializeBounds(double bounds[6])
 {
   for (int k = 0; k < 3; ++k)

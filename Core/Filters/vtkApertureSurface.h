@@ -93,6 +93,16 @@ public:
    */
   static std::uint64_t PointKey(const double p[3], unsigned int side);
 
+  /**
+   * The key of a receiving point by the id of its vertex's first input point (or that point's
+   * global id) and its side's ordinal: it stays with the point when the point moves.
+   */
+  static std::uint64_t IdKey(vtkIdType id, unsigned int side);
+  /**
+   * Keys every receiving point by IdKey(): the global id of its vertex's first input point
+   * (`globalIds`, one value per input point), or that point's index when `globalIds` is nullptr.
+   */
+  void KeyByPointIds(vtkDataArray* globalIds);
   /// Whether a point's three coordinates are finite.
   static bool IsFinite(const double p[3]);
 

@@ -10,7 +10,10 @@ The bunny with its apertures, seen from the front under ParaView's light kit:
   property reaches the mapper;
 - Horizon and Visibility mask draw the exact cap on data without their arrays, and shade from
   them where Aperture Precompute kept them;
-- colouring by an array still colours the surface.
+- colouring by an array still colours the surface;
+- a deforming surface (a ground whose bump moves, 4 time steps) played as an animation: every
+  step draws another picture, the steps after the first cast rays only near the bump, and the
+  animation played again takes every step from the cache and draws the same pictures.
 """
 
 import os
@@ -62,6 +65,81 @@ def check_terrain_horizons(work):
     check(change > 1.0, f"a height field with horizons: Horizon differs from Exact by {change:.2f} "
           "levels on average (> 1)")
     pvs.Delete(view)
+
+
+# A Programmable Source: a ground of 48 x 48 quads with a bump that moves by a quarter of the
+# ground at each of 4 time steps.
+MOVING_BUMP_INFORMATION = """
+from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp
+info = self.GetOutputInformation(0)
+info.Set(sddp.TIME_STEPS(), [0.0, 1.0, 2.0, 3.0], 4)
+info.Set(sddp.TIME_RANGE(), [0.0, 3.0], 2)
+"""
+MOVING_BUMP = """
+from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkCellArray
+from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp
+info = self.GetOutputInformation(0)
+t = info.Get(sddp.UPDATE_TIME_STEP()) if info.Has(sddp.UPDATE_TIME_STEP()) else 0.0
+n, centre = 48, -0.5 + 0.25 * t
+points = vtkPoints()
+for j in range(n + 1):
+    for i in range(n + 1):
+        x, y = -1.0 + 2.0 * i / n, -1.0 + 2.0 * j / n
+        r2 = ((x - centre) ** 2 + y * y) / 0.3 ** 2
+        points.InsertNextPoint(x, y, 0.3 * (1.0 - r2) ** 2 if r2 < 1.0 else 0.0)
+cells = vtkCellArray()
+for j in range(n):
+    for i in range(n):
+        a = j * (n + 1) + i
+        cells.InsertNextCell(3, [a, a + 1, a + n + 2])
+        cells.InsertNextCell(3, [a, a + n + 2, a + n + 1])
+output.SetPoints(points)
+output.SetPolys(cells)
+output.GetInformation().Set(output.DATA_TIME_STEP(), t)
+"""
+
+
+def check_animation(work):
+    """A deforming surface's animation, played twice with the Aperture Lighting representation."""
+    source = pvs.ProgrammableSource(OutputDataSetType="vtkPolyData", Script=MOVING_BUMP,
+                                    ScriptRequestInformation=MOVING_BUMP_INFORMATION)
+    apertures = pvs.AperturePrecompute(Input=source, NumberOfRays=64, LimitDistance=1,
+                                       MaximumDistance=0.4, ReuseUnmovedPoints=1,
+                                       KeyRaysByPointId=1)
+    view = pvs.CreateRenderView(ViewSize=[300, 300], OrientationAxesVisibility=0,
+                                Background=[0.1, 0.1, 0.12])
+    view.UseColorPaletteForBackground = 0
+    display = pvs.Show(apertures, view)
+    display.ColorArrayName = ["POINTS", ""]
+    display.SetRepresentationType("Aperture Lighting")
+    display.ApertureShadingMode = "Exact"
+    view.CameraPosition = [0.0, -2.5, 2.5]
+    view.CameraFocalPoint = [0.0, 0.0, 0.0]
+    view.CameraViewUp = [0, 0, 1]
+    scene = pvs.GetAnimationScene()
+    scene.UpdateAnimationUsingDataTimeSteps()
+    frames, updates = [], []
+    for time in [0.0, 1.0, 2.0, 3.0, 0.0, 1.0, 2.0, 3.0]:
+        scene.AnimationTime = time
+        frames.append(shot(view, work, f"animation-{len(frames)}"))
+        apertures.UpdatePropertyInformation()
+        updates.append(tuple(apertures.GetPropertyValue(name) for name in
+                             ("LastUpdate", "NumberOfSurfacePoints", "NumberOfReusedPoints")))
+    print("animation: (update kind, points that cast rays, points reused) per frame:", updates)
+    # np's min, max and all: the Programmable Source's script imports numpy_interface's into
+    # the main module.
+    moved = np.min([np.abs(frames[k + 1] - frames[k]).mean() for k in range(3)])
+    check(moved > 0.1, f"a moving bump: each step draws another picture (mean |difference| "
+          f"{moved:.2f} levels > 0.1)")
+    check(np.all([u[0] == 2 and 0 < u[1] < u[1] + u[2] for u in updates[1:4]]),
+          "the steps after the first cast rays only near the bump (Moved points)")
+    check(np.all([u[0] == 1 and u[1] == 0 for u in updates[4:]]),
+          "the animation played again takes every step from the cache")
+    again = np.max([np.abs(frames[k + 4] - frames[k]).max() for k in range(4)])
+    check(again == 0, f"played again, the same pictures (largest difference {again:.0f})")
+    pvs.Delete(view)
+    scene.AnimationTime = 0.0
 
 
 def main(plugin, data, baseline, work):
@@ -151,6 +229,7 @@ def main(plugin, data, baseline, work):
     apertures.ComputeVisibilityMask = 0
     display.ApertureShadingMode = "Exact"
     check_terrain_horizons(work)
+    check_animation(work)
 
     pvs.ColorBy(display, ("POINTS", "ApertureRadius"))
     colored = shot(view, work, "colored")

@@ -16,6 +16,8 @@
 //  - the cost of the contact and self-hit rules (the bare loop with and without them) and of the
 //    surface intake;
 //  - 1 -> 2 thread scaling;
+//  - a moving surface: an update in which a tenth of the bunny's points moved, and one in which
+//    every point moved, against a cold run on the same step (rays of a twentieth of its size);
 //  - a 1M-point height field with 64 rays per point.
 //
 // Usage: BenchmarkAperturePrecompute <Testing/Data folder> [--quick]
@@ -33,14 +35,17 @@
 
 #include "vtkImageData.h"
 #include "vtkImageResize.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -285,6 +290,71 @@ double RunIntake(vtkPolyData* mesh, int repeats)
     },
     repeats);
 }
+
+// A copy of `mesh` whose points within `radius` of `centre` (all when radius < 0) rise by
+// `lift` along +y.
+vtkSmartPointer<vtkPolyData> Moved(
+  vtkPolyData* mesh, const double centre[3], double radius, double lift, vtkIdType& count)
+{
+  auto moved = vtkSmartPointer<vtkPolyData>::New();
+  moved->ShallowCopy(mesh);
+  vtkNew<vtkPoints> points;
+  points->DeepCopy(mesh->GetPoints());
+  count = 0;
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    points->GetPoint(i, p);
+    if (radius < 0.0 || vtkMath::Distance2BetweenPoints(p, centre) < radius * radius)
+    {
+      p[1] += lift;
+      points->SetPoint(i, p);
+      ++count;
+    }
+  }
+  moved->SetPoints(points);
+  return moved;
+}
+
+// A moving surface: an update on `after` by a filter that computed `before`, against a cold
+// filter's update on `after` (best of `repeats` each); prints their ratio.
+void MovingSurface(
+  vtkPolyData* before, vtkPolyData* after, int rays, int repeats, const char* what, double goal)
+{
+  const double distance = 0.05 * before->GetLength();
+  auto configure = [&](vtkAperturePrecompute* filter)
+  {
+    filter->SetNumberOfRays(rays);
+    filter->LimitDistanceOn();
+    filter->SetMaximumDistance(distance);
+    filter->ReuseUnmovedPointsOn();
+  };
+  double warm = 1e300;
+  vtkIdType cast = 0, all = 0;
+  for (int r = 0; r < repeats; ++r)
+  {
+    vtkNew<vtkAperturePrecompute> filter;
+    configure(filter);
+    filter->SetInputData(before);
+    filter->Update();
+    filter->SetInputData(after);
+    warm = std::min(warm, Seconds([&]() { filter->Update(); }, 1));
+    cast = filter->GetNumberOfSurfacePoints();
+    all = cast + filter->GetNumberOfReusedPoints();
+  }
+  const double cold = Seconds(
+    [&]()
+    {
+      vtkNew<vtkAperturePrecompute> filter;
+      configure(filter);
+      filter->SetInputData(after);
+      filter->Update();
+    },
+    repeats);
+  std::printf("| moving surface, %s: update / cold run (goal <= %.1f) | %.3f s / %.3f s = %.2f; "
+              "%lld of %lld points cast rays |\n",
+    what, goal, warm, cold, warm / cold, static_cast<long long>(cast), static_cast<long long>(all));
+}
 }
 
 int main(int argc, char* argv[])
@@ -382,6 +452,36 @@ int main(int argc, char* argv[])
   vtkSMPTools::Initialize(threads);
   std::printf("| default: 1 thread / 2 threads | %.3f s / %.3f s |\n", one, two);
   std::printf("| default: 1 -> 2 thread speed-up (goal >= 1.8) | %.2f |\n", one / two);
+
+  // A moving surface: a tenth of the bunny's points (those nearest its highest point) rise by
+  // a hundredth of its size, then every point does.
+  {
+    double bounds[6];
+    bunny->GetBounds(bounds);
+    double top[3] = { 0.0, bounds[2], 0.0 };
+    for (vtkIdType i = 0; i < points; ++i)
+    {
+      double p[3];
+      bunny->GetPoint(i, p);
+      if (p[1] >= top[1])
+      {
+        std::copy_n(p, 3, top);
+      }
+    }
+    // The radius around the top that holds a tenth of the points.
+    std::vector<double> distances(points);
+    for (vtkIdType i = 0; i < points; ++i)
+    {
+      distances[i] = std::sqrt(vtkMath::Distance2BetweenPoints(bunny->GetPoint(i), top));
+    }
+    std::nth_element(distances.begin(), distances.begin() + points / 10, distances.end());
+    const double lift = 0.01 * bunny->GetLength();
+    vtkIdType count;
+    const auto tenth = Moved(bunny, top, distances[points / 10], lift, count);
+    MovingSurface(bunny, tenth, rays, repeats, "a tenth of the points moved", 0.3);
+    const auto every = Moved(bunny, top, -1.0, lift, count);
+    MovingSurface(bunny, every, rays, repeats, "every point moved", 1.0);
+  }
 
   // A 1M-point height field, 64 rays per point (rays, not the default horizon sweeps).
   vtkNew<vtkTerrainRGBReader> terrain;

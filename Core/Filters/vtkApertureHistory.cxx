@@ -1,0 +1,304 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    vtkApertureHistory.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkApertureHistory.h"
+
+#include "vtkApertureSurface.h"
+#include "vtkDataObject.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <unordered_set>
+
+namespace
+{
+// A moved triangle's box spanning more grid cells than this marks every point instead.
+constexpr double MaximumCellsPerBox = 32768.0;
+
+// The world coordinates of a surface's vertices (3 each).
+std::vector<double> WorldVertices(const vtkApertureSurface& surface)
+{
+  std::vector<double> world(3 * size_t(surface.GetNumberOfVertices()));
+  for (size_t i = 0; i < world.size(); ++i)
+  {
+    world[i] = surface.Vertices[i] + surface.Origin[i % 3];
+  }
+  return world;
+}
+
+// The cells of a grid, marked where the boxes of triangles grown by `reach` overlap them. The
+// cells are half as wide as the reach, so that few points beyond it are marked.
+class CellSet
+{
+public:
+  explicit CellSet(double reach)
+    : Size(0.5 * reach)
+    , Reach(reach)
+  {
+  }
+
+  // Marks the cells of the box of a triangle's corners grown by the reach; false when it spans
+  // too many cells (or is not finite) to mark.
+  bool AddTriangle(const double* corners[3])
+  {
+    std::int64_t lo[3], hi[3];
+    double cells = 1.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      const double a = std::min({ corners[0][c], corners[1][c], corners[2][c] }) - this->Reach;
+      const double b = std::max({ corners[0][c], corners[1][c], corners[2][c] }) + this->Reach;
+      cells *= std::floor(b / this->Size) - std::floor(a / this->Size) + 1.0;
+      if (!(cells <= MaximumCellsPerBox))
+      {
+        return false;
+      }
+      lo[c] = static_cast<std::int64_t>(std::floor(a / this->Size));
+      hi[c] = static_cast<std::int64_t>(std::floor(b / this->Size));
+    }
+    for (std::int64_t i = lo[0]; i <= hi[0]; ++i)
+    {
+      for (std::int64_t j = lo[1]; j <= hi[1]; ++j)
+      {
+        for (std::int64_t k = lo[2]; k <= hi[2]; ++k)
+        {
+          this->Cells.insert(Key(i, j, k));
+        }
+      }
+    }
+    return true;
+  }
+
+  bool Contains(const double p[3]) const
+  {
+    std::int64_t ijk[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      const double cell = std::floor(p[c] / this->Size);
+      if (!(std::abs(cell) < 1e15))
+      {
+        return true; // not finite or far out: needed
+      }
+      ijk[c] = static_cast<std::int64_t>(cell);
+    }
+    return this->Cells.count(Key(ijk[0], ijk[1], ijk[2])) > 0;
+  }
+
+private:
+  static std::uint64_t Key(std::int64_t i, std::int64_t j, std::int64_t k)
+  {
+    const std::uint64_t m = 0x1FFFFF; // 21 bits each
+    return (std::uint64_t(i) & m) | (std::uint64_t(j) & m) << 21 | (std::uint64_t(k) & m) << 42;
+  }
+
+  double Size;
+  double Reach;
+  std::unordered_set<std::uint64_t> Cells;
+};
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureHistory::SetKey(const std::string& key)
+{
+  if (key != this->Key)
+  {
+    this->Key = key;
+    this->Steps.clear();
+    this->Forget();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkDataObject* vtkApertureHistory::Find(double time, vtkMTimeType pipeline) const
+{
+  for (const Step& step : this->Steps)
+  {
+    if (step.Time == time && step.Pipeline == pipeline)
+    {
+      return step.Output;
+    }
+  }
+  return nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureHistory::Store(
+  double time, vtkMTimeType pipeline, vtkDataObject* output, int capacity)
+{
+  if (capacity <= 0 || this->Find(time, pipeline))
+  {
+    return;
+  }
+  // Steps of an earlier pipeline cannot be found again.
+  this->Steps.erase(std::remove_if(this->Steps.begin(), this->Steps.end(),
+                      [pipeline](const Step& step) { return step.Pipeline != pipeline; }),
+    this->Steps.end());
+  auto copy = vtk::TakeSmartPointer(output->NewInstance());
+  copy->ShallowCopy(output);
+  this->Steps.push_back(Step{ time, pipeline, copy });
+  while (static_cast<int>(this->Steps.size()) > capacity)
+  {
+    this->Steps.pop_front();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkApertureHistory::SameCells(const vtkApertureSurface& surface) const
+{
+  return this->Remembered && surface.Triangles == this->Triangles &&
+    3 * size_t(surface.GetNumberOfVertices()) == this->VertexWorld.size();
+}
+
+//------------------------------------------------------------------------------
+std::vector<vtkIdType> vtkApertureHistory::Match(const vtkApertureSurface& surface) const
+{
+  // Each vertex's first receiving point and number of sides, remembered and new (a vertex's
+  // sides are consecutive points).
+  const size_t vertices = surface.GetNumberOfVertices();
+  std::vector<vtkIdType> oldFirst(vertices, -1), newFirst(vertices, -1);
+  std::vector<vtkIdType> oldCount(vertices, 0), newCount(vertices, 0);
+  for (size_t p = 0; p < this->PointVertex.size(); ++p)
+  {
+    const std::uint32_t v = this->PointVertex[p];
+    oldFirst[v] = oldFirst[v] < 0 ? static_cast<vtkIdType>(p) : oldFirst[v];
+    ++oldCount[v];
+  }
+  for (size_t p = 0; p < surface.PointVertex.size(); ++p)
+  {
+    const std::uint32_t v = surface.PointVertex[p];
+    newFirst[v] = newFirst[v] < 0 ? static_cast<vtkIdType>(p) : newFirst[v];
+    ++newCount[v];
+  }
+  std::vector<vtkIdType> match(surface.PointVertex.size(), -1);
+  for (size_t p = 0; p < match.size(); ++p)
+  {
+    const std::uint32_t v = surface.PointVertex[p];
+    if (oldCount[v] == newCount[v])
+    {
+      match[p] = oldFirst[v] + (static_cast<vtkIdType>(p) - newFirst[v]);
+    }
+  }
+  return match;
+}
+
+//------------------------------------------------------------------------------
+// Per vertex, whether one of its input points is somewhere else than last time.
+std::vector<unsigned char> vtkApertureHistory::MovedVertices(
+  const vtkApertureSurface& surface, const std::vector<double>& world) const
+{
+  std::vector<unsigned char> moved(surface.GetNumberOfVertices(), 0);
+  const size_t stride = world.size() / std::max<size_t>(surface.InputPoints.size(), 1);
+  for (size_t i = 0; i < surface.InputPoints.size(); ++i)
+  {
+    const vtkIdType point = surface.InputPoints[i];
+    const double* now = world.data() + stride * i;
+    const bool same = std::equal(now, now + stride, this->World.data() + stride * i);
+    if (point >= 0 && !same)
+    {
+      moved[surface.PointVertex[point]] = 1;
+    }
+  }
+  return moved;
+}
+
+//------------------------------------------------------------------------------
+std::vector<unsigned char> vtkApertureHistory::Needed(
+  const vtkApertureSurface& surface, const std::vector<double>& world, double reach)
+{
+  const vtkIdType n = surface.GetNumberOfPoints();
+  std::vector<unsigned char> all(n, 1);
+  this->Sources.assign(n, -1);
+  if (!(reach > 0.0 && reach < 1e300) || world.size() != this->World.size() ||
+    world.size() % std::max<size_t>(surface.InputPoints.size(), 1) != 0 ||
+    !this->SameCells(surface))
+  {
+    return all;
+  }
+  const std::vector<unsigned char> moved = this->MovedVertices(surface, world);
+  if (2 * std::count(moved.begin(), moved.end(), 1) > static_cast<std::ptrdiff_t>(moved.size()))
+  {
+    return all; // most of it moved: sorting out the rest would cost more than it saves
+  }
+  const std::vector<double> now = WorldVertices(surface);
+  CellSet cells(reach);
+  for (size_t t = 0; t < surface.Triangles.size(); t += 3)
+  {
+    const std::uint32_t* v = &surface.Triangles[t];
+    if (!moved[v[0]] && !moved[v[1]] && !moved[v[2]])
+    {
+      continue;
+    }
+    const std::vector<double>& before = this->VertexWorld;
+    for (const std::vector<double>* at : { &before, &now })
+    {
+      const double* corners[3] = { &(*at)[3 * size_t(v[0])], &(*at)[3 * size_t(v[1])],
+        &(*at)[3 * size_t(v[2])] };
+      if (!cells.AddTriangle(corners))
+      {
+        return all;
+      }
+    }
+  }
+  std::vector<unsigned char> needed(n, 0);
+  const std::vector<vtkIdType> match = this->Match(surface);
+  for (vtkIdType p = 0; p < n; ++p)
+  {
+    needed[p] = match[p] < 0 || cells.Contains(&now[3 * size_t(surface.PointVertex[p])]) ? 1 : 0;
+    this->Sources[p] = needed[p] ? -1 : match[p];
+  }
+  return needed;
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureHistory::Reuse(Caps& caps) const
+{
+  const Caps& old = this->Results;
+  const size_t n = this->Sources.size();
+  const size_t bytes = n ? caps.Mask.size() / n : 0; // mask bytes per point
+  for (size_t p = 0; p < n; ++p)
+  {
+    const vtkIdType q = this->Sources[p];
+    if (q < 0)
+    {
+      continue;
+    }
+    std::copy_n(&old.BentNormal[3 * q], 3, &caps.BentNormal[3 * p]);
+    caps.Radius[p] = old.Radius[q];
+    if (!caps.Occlusion.empty())
+    {
+      caps.Occlusion[p] = old.Occlusion[q];
+    }
+    std::copy_n(old.Mask.data() + q * bytes, bytes, caps.Mask.data() + p * bytes);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureHistory::Remember(
+  const vtkApertureSurface& surface, std::vector<double> world, const Caps& caps)
+{
+  this->Remembered = true;
+  this->World = std::move(world);
+  this->VertexWorld = WorldVertices(surface);
+  this->Triangles = surface.Triangles;
+  this->PointVertex = surface.PointVertex;
+  this->Results = caps;
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureHistory::Forget()
+{
+  this->Remembered = false;
+  this->World.clear();
+  this->VertexWorld.clear();
+  this->Triangles.clear();
+  this->PointVertex.clear();
+  this->Sources.clear();
+  this->Results = Caps();
+}
