@@ -225,6 +225,22 @@ vtkSmartPointer<vtkPolyData> vtkApertureDistributedOccluders::TakeGhosts(
 }
 
 //------------------------------------------------------------------------------
+bool vtkApertureDistributedOccluders::AllSucceeded(
+  vtkMultiProcessController* controller, bool ok, std::string& failed)
+{
+  const int ranks = controller->GetNumberOfProcesses();
+  int mine = ok ? 1 : 0;
+  std::vector<int> all(ranks, 0);
+  controller->AllGather(&mine, all.data(), 1);
+  failed.clear();
+  for (int r = 0; r < ranks; ++r)
+  {
+    failed += all[r] ? "" : (failed.empty() ? "" : ", ") + std::to_string(r);
+  }
+  return failed.empty();
+}
+
+//------------------------------------------------------------------------------
 std::vector<vtkPolyData*> vtkApertureDistributedOccluders::Occluders(
   vtkInformationVector* occluderInfo, vtkPolyData* remote)
 {

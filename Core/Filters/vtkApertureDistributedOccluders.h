@@ -28,6 +28,7 @@
 #include "vtkApertureLightingCoreModule.h" // For export macro
 #include "vtkSmartPointer.h"               // For vtkSmartPointer
 
+#include <string> // For std::string
 #include <vector> // For std::vector
 
 class vtkInformation;
@@ -68,6 +69,12 @@ public:
    */
   static vtkSmartPointer<vtkPolyData> TakeGhosts(
     vtkPolyData* piece, vtkSmartPointer<vtkPolyData>& remote);
+
+  /**
+   * After a distributed filter's work (collective): whether every rank's `ok` is true; when not,
+   * the ranks that failed, in `failed` ("1, 3").
+   */
+  static bool AllSucceeded(vtkMultiProcessController* controller, bool ok, std::string& failed);
 
   /**
    * A filter's occluders: the vtkPolyData on its occluder port, and `remote` when it has cells.

@@ -1003,6 +1003,32 @@ int vtkAperturePrecompute::RequestUpdateExtent(
 int vtkAperturePrecompute::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  const int done = this->Compute(inputVector, outputVector);
+  if (!vtkApertureDistributedOccluders::IsDistributed(
+        this->Controller, outputVector->GetInformationObject(0)))
+  {
+    return done;
+  }
+  // Every rank fails when one does, and says which: a piece missing from the whole is no
+  // answer, and the other ranks would otherwise not know.
+  std::string failed;
+  if (vtkApertureDistributedOccluders::AllSucceeded(this->Controller, done != 0, failed))
+  {
+    return done;
+  }
+  if (done)
+  {
+    vtkErrorMacro("Rank(s) " << failed << " failed (their errors say why); this rank's piece is "
+                             << "left empty too.");
+    vtkDataObject::GetData(outputVector, 0)->Initialize();
+  }
+  return 0;
+}
+
+//------------------------------------------------------------------------------
+int vtkAperturePrecompute::Compute(
+  vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
   vtkDataObject* output = vtkDataObject::GetData(outputVector, 0);
   vtkInformation* outInfo = outputVector->GetInformationObject(0);

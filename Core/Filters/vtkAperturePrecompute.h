@@ -545,6 +545,8 @@ private:
   vtkAperturePrecompute(const vtkAperturePrecompute&) = delete;
   // MaximumDistance when LimitDistance is on, else VTK_DOUBLE_MAX.
   double SearchDistance() const;
+  // RequestData() of this rank's piece.
+  int Compute(vtkInformationVector** inputVector, vtkInformationVector* outputVector);
   // The settings' part of PrintSelf(): also the key of what earlier updates computed.
   void PrintSettings(ostream& os, vtkIndent indent);
   void operator=(const vtkAperturePrecompute&) = delete;

@@ -18,8 +18,9 @@
 // through shared points, a boss standing on a foot); then with every cell on rank 0 and empty
 // pieces elsewhere, which must give empty outputs and rank 0 the serial answer itself. Points on
 // the slabs' borders are where pieces differ if anything does: every point counts, and the
-// largest difference has a goal of its own. Last, the Fuji tile as a height field in pieces,
-// whose extents must get the whole grid's caps.
+// largest difference has a goal of its own. A broken piece on rank 1 must fail every rank's
+// update with a clear error, not hang. Last, the Fuji tile as a height field in pieces, whose
+// extents must get the whole grid's caps.
 
 #include "vtkAperturePrecompute.h"
 #include "vtkApertureReference.h"
@@ -29,6 +30,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCleanPolyData.h"
+#include "vtkCommand.h"
 #include "vtkCylinderSource.h"
 #include "vtkDataArray.h"
 #include "vtkIdTypeArray.h"
@@ -340,6 +342,46 @@ bool Distributed(vtkMPIController* controller, vtkPolyData* surface,
   return all == 1;
 }
 
+// Keeps the last error message an object reported.
+class ErrorCatcher : public vtkCommand
+{
+public:
+  static ErrorCatcher* New() { return new ErrorCatcher; }
+  void Execute(vtkObject*, unsigned long, void* data) override
+  {
+    this->Message = data ? static_cast<const char*>(data) : "";
+  }
+  std::string Message;
+};
+
+// A rank whose piece is broken (a triangle naming a point the piece does not have): every rank's
+// update fails, the broken rank saying why and the others which rank failed, and none hangs.
+bool FailingRank(vtkMPIController* controller, vtkPolyData* surface)
+{
+  const int rank = controller->GetLocalProcessId();
+  const int ranks = controller->GetNumberOfProcesses();
+  vtkSmartPointer<vtkPolyData> piece = Piece(surface, rank, ranks, false);
+  if (rank == 1)
+  {
+    const vtkIdType broken[3] = { 0, 1, piece->GetNumberOfPoints() + 5 };
+    piece->GetPolys()->InsertNextCell(3, broken);
+  }
+  vtkNew<vtkAperturePrecompute> filter;
+  filter->SetInputData(piece);
+  filter->SetNumberOfRays(16);
+  vtkNew<ErrorCatcher> errors;
+  filter->AddObserver(vtkCommand::ErrorEvent, errors);
+  const bool updated = filter->UpdatePiece(rank, ranks, 0) != 0;
+  const std::string expected = rank == 1 ? "point id" : "Rank(s) 1 failed";
+  int ok = !updated && errors->Message.find(expected) != std::string::npos &&
+    filter->GetOutputDataObject(0)->GetNumberOfElements(vtkDataObject::POINT) == 0;
+  std::printf("%s a broken piece on rank 1: rank %d's update %s, error \"%s\"\n",
+    ok ? "ok  " : "FAIL", rank, updated ? "succeeded" : "failed", errors->Message.c_str());
+  int all = 0;
+  controller->AllReduce(&ok, &all, 1, vtkCommunicator::MIN_OP);
+  return all == 1;
+}
+
 // A height field in pieces: each rank's extent of the Fuji tile (from its input grown by the
 // halo the filter asks for) against the same texels of the whole grid, computed serially.
 bool DistributedHeightField(
@@ -431,6 +473,7 @@ int main(int argc, char* argv[])
       ok = Distributed(controller, surface, serial, true, unlimited, "bunny, one rank") && ok;
     }
   }
+  ok = FailingRank(controller, ReadBunny(argv[1])) && ok;
   ok = DistributedHeightField(controller, argv[1], unlimited, "height field") && ok;
   ok = DistributedHeightField(controller, argv[1], 3000.0, "height field, 3 km halo") && ok;
   controller->Finalize();
