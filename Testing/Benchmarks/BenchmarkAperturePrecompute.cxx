@@ -20,8 +20,9 @@
 //    every point moved, against a cold run on the same step (rays of a twentieth of its size);
 //  - a 1M-point height field with 64 rays per point.
 //
-// Usage: BenchmarkAperturePrecompute <Testing/Data folder> [--quick]
-// --quick runs a few points only (a smoke test that the benchmark still works).
+// Usage: BenchmarkAperturePrecompute <Testing/Data folder> [--quick | --large TRIANGLES]
+// --quick runs a few points only (a smoke test that the benchmark still works); --large
+// measures memory and throughput on the bunny split and copied to at least TRIANGLES instead.
 
 #include "vtkApertureBenchmarkMemory.h"
 #include "vtkApertureMeshSurface.h"
@@ -33,8 +34,10 @@
 #include "vtkApertureSurface.h"
 #include "vtkTerrainRGBReader.h"
 
+#include "vtkAppendPolyData.h"
 #include "vtkImageData.h"
 #include "vtkImageResize.h"
+#include "vtkLinearSubdivisionFilter.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
@@ -355,17 +358,88 @@ void MovingSurface(
               "%lld of %lld points cast rays |\n",
     what, goal, warm, cold, warm / cold, static_cast<long long>(cast), static_cast<long long>(all));
 }
+
+// A surface of at least `triangles`: the bunny split into 4^k triangles each
+// (vtkLinearSubdivisionFilter), then copies of it side by side.
+vtkSmartPointer<vtkPolyData> LargeSurface(vtkPolyData* bunny, vtkIdType triangles)
+{
+  vtkSmartPointer<vtkPolyData> mesh = bunny;
+  while (4 * mesh->GetNumberOfPolys() <= triangles)
+  {
+    vtkNew<vtkLinearSubdivisionFilter> split;
+    split->SetInputData(mesh);
+    split->SetNumberOfSubdivisions(1);
+    split->Update();
+    mesh = split->GetOutput();
+  }
+  vtkNew<vtkAppendPolyData> copies;
+  const vtkIdType count = (triangles + mesh->GetNumberOfPolys() - 1) / mesh->GetNumberOfPolys();
+  for (vtkIdType c = 0; c < count; ++c)
+  {
+    vtkNew<vtkPoints> points;
+    points->DeepCopy(mesh->GetPoints());
+    for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      points->GetPoint(i, p);
+      p[0] += 1.2 * mesh->GetLength() * c;
+      points->SetPoint(i, p);
+    }
+    vtkNew<vtkPolyData> copy;
+    copy->SetPoints(points);
+    copy->SetPolys(mesh->GetPolys());
+    copies->AddInputData(copy);
+  }
+  copies->Update();
+  return copies->GetOutput();
+}
+
+// Issue 25's large surfaces: peak memory against the input and the outputs, and throughput
+// against the bare fast-BVH loop, for the BVH the default picks and for both, 64 rays a point
+// (the bare loop's rays are made beforehand, 12 bytes each).
+void LargeMesh(vtkPolyData* bunny, vtkIdType triangles)
+{
+  const vtkSmartPointer<vtkPolyData> mesh = LargeSurface(bunny, triangles);
+  const int rays = 64;
+  std::printf("## vtkAperturePrecompute on a large surface\n\n%lld points, %lld triangles, %d "
+              "rays a point, %d thread(s)\n\n| measure | value |\n|---|---|\n",
+    static_cast<long long>(mesh->GetNumberOfPoints()),
+    static_cast<long long>(mesh->GetNumberOfPolys()), rays,
+    vtkSMPTools::GetEstimatedNumberOfThreads());
+  for (const int structure : { vtkAperturePrecompute::AUTOMATIC, vtkAperturePrecompute::FAST })
+  {
+    double inputKiB, outputKiB;
+    const long peak = PeakOfRun(mesh, rays, structure, inputKiB, outputKiB);
+    std::printf("| %s: peak / (input %.0f MiB + outputs %.0f MiB) (goal <= 1.5) | %.2f (%.0f "
+                "MiB) |\n",
+      structure == vtkAperturePrecompute::AUTOMATIC ? "default" : "fast BVH", inputKiB / 1024,
+      outputKiB / 1024, peak / (inputKiB + outputKiB), peak / 1024.0);
+  }
+  vtkApertureSurface surface;
+  const Rays prepared = PrepareRays(mesh, rays, surface);
+  vtkIdType traced = 0;
+  const double bare = RunBare(surface, prepared, rays, false, false, 1, &traced);
+  for (const int structure : { vtkAperturePrecompute::AUTOMATIC, vtkAperturePrecompute::FAST })
+  {
+    const double filter = RunFilter(mesh, rays, structure, 1);
+    std::printf("| %s: filter %.1f s / bare fast-BVH loop %.1f s: throughput ratio (goal >= "
+                "0.85) | %.2f |\n",
+      structure == vtkAperturePrecompute::AUTOMATIC ? "default" : "fast BVH", filter, bare,
+      bare / filter);
+  }
+}
 }
 
 int main(int argc, char* argv[])
 {
   if (argc < 2)
   {
-    std::cerr << "Usage: " << argv[0] << " <Testing/Data folder> [--quick]\n";
+    std::cerr << "Usage: " << argv[0] << " <Testing/Data folder> [--quick | --large TRIANGLES]\n";
     return 2;
   }
   const std::string data = argv[1];
   const bool quick = argc > 2 && std::string(argv[2]) == "--quick";
+  const bool large = argc > 3 && std::string(argv[2]) == "--large";
   const int repeats = quick ? 1 : 3;
   const int threads = vtkSMPTools::GetEstimatedNumberOfThreads();
 
@@ -378,6 +452,11 @@ int main(int argc, char* argv[])
   {
     std::cerr << "Cannot read " << data << "/stanford-bunny.obj\n";
     return 1;
+  }
+  if (large)
+  {
+    LargeMesh(bunny, std::stoll(argv[3]));
+    return 0;
   }
   const int rays = quick ? 16 : 256;
   const vtkIdType points = bunny->GetNumberOfPoints();
