@@ -157,7 +157,7 @@ bool vtkApertureHistory::SameCells(const vtkApertureSurface& surface) const
 }
 
 //------------------------------------------------------------------------------
-std::vector<vtkIdType> vtkApertureHistory::Match(const vtkApertureSurface& surface) const
+std::vector<vtkIdType> vtkApertureHistory::MatchSides(const vtkApertureSurface& surface) const
 {
   // Each vertex's first receiving point and number of sides, remembered and new (a vertex's
   // sides are consecutive points).
@@ -215,9 +215,11 @@ std::vector<unsigned char> vtkApertureHistory::Needed(
   const vtkIdType n = surface.GetNumberOfPoints();
   std::vector<unsigned char> all(n, 1);
   this->Sources.assign(n, -1);
+  this->Matched =
+    !this->Remembered ? NO_SURFACE : (this->SameCells(surface) ? SAME_CELLS : OTHER_CELLS);
   if (!(reach > 0.0 && reach < 1e300) || world.size() != this->World.size() ||
     world.size() % std::max<size_t>(surface.InputPoints.size(), 1) != 0 ||
-    !this->SameCells(surface))
+    this->Matched != SAME_CELLS)
   {
     return all;
   }
@@ -247,7 +249,7 @@ std::vector<unsigned char> vtkApertureHistory::Needed(
     }
   }
   std::vector<unsigned char> needed(n, 0);
-  const std::vector<vtkIdType> match = this->Match(surface);
+  const std::vector<vtkIdType> match = this->MatchSides(surface);
   for (vtkIdType p = 0; p < n; ++p)
   {
     needed[p] = match[p] < 0 || cells.Contains(&now[3 * size_t(surface.PointVertex[p])]) ? 1 : 0;

@@ -82,14 +82,21 @@ public:
   /// Forgets the remembered surface (a run that cannot be reused: composite, distributed...).
   void Forget();
 
-  /// Whether a surface is remembered, and whether `surface` has its triangles and vertices.
-  bool HasSurface() const { return this->Remembered; }
-  bool SameCells(const vtkApertureSurface& surface) const;
+  /// What the last Needed() found remembered: no surface, one of other cells, or the same.
+  enum Match
+  {
+    NO_SURFACE,
+    OTHER_CELLS,
+    SAME_CELLS
+  };
+  Match GetMatch() const { return this->Matched; }
 
 private:
+  // Whether `surface` has the remembered surface's triangles and vertices.
+  bool SameCells(const vtkApertureSurface& surface) const;
   // The remembered receiving point of each of `surface`'s points of the same vertex and side
   // (-1 where the vertex has another number of sides).
-  std::vector<vtkIdType> Match(const vtkApertureSurface& surface) const;
+  std::vector<vtkIdType> MatchSides(const vtkApertureSurface& surface) const;
   std::vector<unsigned char> MovedVertices(
     const vtkApertureSurface& surface, const std::vector<double>& world) const;
 
@@ -102,6 +109,7 @@ private:
   };
   std::deque<Step> Steps;
   bool Remembered = false;
+  Match Matched = NO_SURFACE;
   std::vector<double> World;       // the input's coordinates (and normals), per point
   std::vector<double> VertexWorld; // the surface's vertices, world coordinates (3 each)
   std::vector<std::uint32_t> Triangles, PointVertex;

@@ -659,13 +659,16 @@ bool vtkAperturePrecompute::vtkRun::BuildSurfaces()
     vtkErrorWithObjectMacro(self, << error);
     return false;
   }
-  for (size_t i = 0; i < this->Receivers.size() && self->KeyRaysByPointId; ++i)
+  if (!self->KeyRaysByPointId)
   {
-    vtkDataSet* source = this->Receivers[i]->Source();
-    vtkDataArray* ids = source->GetPointData()->GetGlobalIds();
+    return true;
+  }
+  for (const auto& r : this->Receivers)
+  {
+    vtkDataArray* ids = r->Source()->GetPointData()->GetGlobalIds();
     const bool fits = ids && ids->GetNumberOfComponents() == 1 &&
-      ids->GetNumberOfTuples() == source->GetNumberOfPoints();
-    this->Receivers[i]->Surface.KeyByPointIds(fits ? ids : nullptr);
+      ids->GetNumberOfTuples() == r->Source()->GetNumberOfPoints();
+    r->Surface.KeyByPointIds(fits ? ids : nullptr);
   }
   return true;
 }
@@ -701,9 +704,10 @@ void vtkAperturePrecompute::vtkRun::PlanReuse()
   // A ray starts up to 2 offsets from its point, and is traced from a quarter offset behind.
   const double reach = self->SearchDistance() + 3.0 * offset;
   this->Needed = self->History->Needed(r->Surface, this->World, reach);
-  if (self->History->HasSurface())
+  const vtkApertureHistory::Match match = self->History->GetMatch();
+  if (match != vtkApertureHistory::NO_SURFACE)
   {
-    self->LastUpdate = self->History->SameCells(r->Surface) ? MOVED_POINTS : NEW_TOPOLOGY;
+    self->LastUpdate = match == vtkApertureHistory::SAME_CELLS ? MOVED_POINTS : NEW_TOPOLOGY;
   }
   self->NumberOfReusedPoints = std::count(this->Needed.begin(), this->Needed.end(), 0);
 }
@@ -750,11 +754,10 @@ bool vtkAperturePrecompute::vtkRun::Cast()
   {
     casting += r->Surface.GetNumberOfPoints();
   }
-  if (this->Reusable)
-  {
-    casting = std::count(this->Needed.begin(), this->Needed.end(), 1);
-  }
+  casting = this->Reusable ? std::count(this->Needed.begin(), this->Needed.end(), 1) : casting;
   self->NumberOfSurfacePoints = casting;
+  const std::vector<unsigned char> all; // CastRays: every point
+  const std::vector<unsigned char>& needed = this->Reusable ? this->Needed : all;
   vtkIdType done = 0;
   self->UpdateProgress(0.0);
   std::string error;
@@ -765,8 +768,8 @@ bool vtkAperturePrecompute::vtkRun::Cast()
     r->Results.Radius.resize(n);
     r->Results.Occlusion.assign(self->ComputeAmbientOcclusion ? n : 0, 0.0f);
     r->Results.Mask.assign(mask.Side > 0 ? n * mask.Side * mask.Side / 8 : 0, 0);
-    const CastRays cast(r->Surface, this->Scene, sampler, maximumDistance, mask,
-      this->Reusable ? this->Needed : std::vector<unsigned char>(), r->Results);
+    const CastRays cast(
+      r->Surface, this->Scene, sampler, maximumDistance, mask, needed, r->Results);
     auto progress = [&](vtkIdType traced)
     {
       self->UpdateProgress(static_cast<double>(done + traced) / std::max<vtkIdType>(casting, 1));

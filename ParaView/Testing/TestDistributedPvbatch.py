@@ -23,7 +23,7 @@ import tempfile
 import numpy as np
 import paraview.simple as pvs
 from paraview import servermanager
-from aperture_test_data import read_png, write_cad_part, write_valley
+from aperture_test_data import dark_view, read_png, write_cad_part, write_valley
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 
@@ -101,9 +101,7 @@ def compare(name, serial, distributed, rank):
 def pictures(name, serial, distributed, work, rank):
     """Both outputs drawn by the Aperture Lighting representation (collective: IceT composites
     every rank's piece); rank 0 compares the pictures."""
-    view = pvs.CreateRenderView(ViewSize=[300, 300], OrientationAxesVisibility=0,
-                                Background=[0.1, 0.1, 0.12])
-    view.UseColorPaletteForBackground = 0
+    view = dark_view(300)
     shots = []
     for source in (serial, distributed):
         display = pvs.Show(source, view)

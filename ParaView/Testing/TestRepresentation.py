@@ -21,7 +21,7 @@ import sys
 
 import numpy as np
 import paraview.simple as pvs
-from aperture_test_data import read_png
+from aperture_test_data import dark_view, read_png
 
 FAILURES = []
 
@@ -45,9 +45,7 @@ def check_terrain_horizons(work):
     terrain = pvs.AperturePrecompute(Input=grid, HeightScale=0.2, ComputeHorizonAngles=1)
     warp = pvs.WarpByScalar(Input=terrain, Scalars=["POINTS", "RTData"], ScaleFactor=0.2,
                             UseNormal=1, Normal=[0, 0, 1])
-    view = pvs.CreateRenderView(ViewSize=[400, 400], OrientationAxesVisibility=0,
-                                Background=[0.1, 0.1, 0.12])
-    view.UseColorPaletteForBackground = 0
+    view = dark_view(400)
     display = pvs.Show(warp, view)
     display.ColorArrayName = ["POINTS", ""]
     display.SetRepresentationType("Aperture Lighting")
@@ -107,9 +105,7 @@ def check_animation(work):
     apertures = pvs.AperturePrecompute(Input=source, NumberOfRays=64, LimitDistance=1,
                                        MaximumDistance=0.4, ReuseUnmovedPoints=1,
                                        KeyRaysByPointId=1)
-    view = pvs.CreateRenderView(ViewSize=[300, 300], OrientationAxesVisibility=0,
-                                Background=[0.1, 0.1, 0.12])
-    view.UseColorPaletteForBackground = 0
+    view = dark_view(300)
     display = pvs.Show(apertures, view)
     display.ColorArrayName = ["POINTS", ""]
     display.SetRepresentationType("Aperture Lighting")
@@ -147,9 +143,7 @@ def main(plugin, data, baseline, work):
     os.makedirs(work, exist_ok=True)
     bunny = pvs.OpenDataFile(os.path.join(data, "stanford-bunny.obj"))
     apertures = pvs.AperturePrecompute(Input=bunny, NumberOfRays=256)
-    view = pvs.CreateRenderView(ViewSize=[400, 400], OrientationAxesVisibility=0,
-                                Background=[0.1, 0.1, 0.12])
-    view.UseColorPaletteForBackground = 0
+    view = dark_view(400)
     display = pvs.Show(apertures, view)
     display.ColorArrayName = ['POINTS', '']
     view.CameraPosition = [-0.02, 0.11, 0.45]

@@ -1,6 +1,16 @@
-"""Test data the plugin's tests write themselves, and the pictures they read back."""
+"""Test data the plugin's tests write themselves, their views, and the pictures they read back."""
 
 import math
+
+
+def dark_view(size):
+    """A render view of size x size pixels on a dark grey background, without axes."""
+    import paraview.simple as pvs
+
+    view = pvs.CreateRenderView(ViewSize=[size, size], OrientationAxesVisibility=0,
+                                Background=[0.1, 0.1, 0.12])
+    view.UseColorPaletteForBackground = 0
+    return view
 
 
 def read_png(path):
