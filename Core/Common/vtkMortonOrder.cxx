@@ -58,10 +58,12 @@ std::vector<std::uint32_t> vtkMortonOrder::Codes(
   {
     for (int c = 0; c < 3; ++c)
     {
-      const float x = positions[3 * i + c];
-      const float unit = hi[c] > lo[c] && std::isfinite(x) ? (x - lo[c]) / (hi[c] - lo[c]) : 0.0f;
-      codes[i] |= Spread(static_cast<std::uint32_t>(std::min(std::max(unit, 0.0f), 1.0f) * 1023.0f))
-        << c;
+      // In double: the span of finite floats can overflow a float (then unit is inf/inf).
+      const double x = positions[3 * i + c];
+      const double span = static_cast<double>(hi[c]) - lo[c];
+      const double unit = span > 0.0 && std::isfinite(x) ? (x - lo[c]) / span : 0.0;
+      const double clamped = unit > 0.0 ? std::min(unit, 1.0) : 0.0;
+      codes[i] |= Spread(static_cast<std::uint32_t>(clamped * 1023.0)) << c;
     }
   }
   return codes;

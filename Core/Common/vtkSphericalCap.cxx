@@ -553,7 +553,8 @@ bool vtkSphericalCap::UnitAxis(const double v[3], double u[3])
 //------------------------------------------------------------------------------
 double vtkSphericalCap::ClampLightRadius(double radius)
 {
-  return std::min(std::max(radius, MinimumLightRadius), MaximumLightRadius);
+  // Written so that NaN gets the smallest radius.
+  return radius > MinimumLightRadius ? std::min(radius, MaximumLightRadius) : MinimumLightRadius;
 }
 
 //------------------------------------------------------------------------------

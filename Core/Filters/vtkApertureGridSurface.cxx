@@ -104,7 +104,7 @@ void GridPoints(const Grid& grid, vtkDataArray* heights, double heightScale,
     [&](vtkIdType id, const double p[3])
     {
       std::copy_n(p, 3, &world[3 * id]);
-      finite[id] = vtkApertureSurface::IsFinite(p);
+      finite[id] = vtkApertureSurface::IsUsable(p);
     });
 }
 
@@ -224,7 +224,7 @@ bool vtkApertureGridSurface::Set(vtkApertureSurface& surface, vtkImageData* inpu
     {
       surface.Vertices[3 * id + k] = static_cast<float>(world[3 * id + k] - origin[k]);
     }
-    surface.NonFinitePoints += finite[id] ? 0 : 1;
+    surface.UnusablePoints += finite[id] ? 0 : 1;
   }
   surface.Triangles = GridTriangles(grid, finite);
   if (surface.Triangles.empty())
@@ -244,7 +244,7 @@ void vtkApertureGridSurface::ExpandBounds(
   ForEachGridPoint(Grid(input), heights, heightScale,
     [&](vtkIdType, const double p[3])
     {
-      if (!vtkApertureSurface::IsFinite(p))
+      if (!vtkApertureSurface::IsUsable(p))
       {
         return;
       }

@@ -136,7 +136,7 @@ void Build::Weld()
   std::vector<vtkIdType> order;
   for (vtkIdType i = 0; i < this->N; ++i)
   {
-    this->Finite[i] = vtkApertureSurface::IsFinite(&this->World[3 * i]);
+    this->Finite[i] = vtkApertureSurface::IsUsable(&this->World[3 * i]);
     if (this->Finite[i])
     {
       order.push_back(i);
@@ -766,7 +766,7 @@ void Build::PointOfEachInput()
     if (!this->Finite[i])
     {
       map[i] = vtkApertureSurface::Invalid;
-      ++this->S.NonFinitePoints;
+      ++this->S.UnusablePoints;
       continue;
     }
     if (map[i] == vtkApertureSurface::NotOnSurface)

@@ -874,7 +874,7 @@ void vtkAperturePrecompute::vtkRun::Warn()
   vtkIdType nonFinite = 0, undefinedNormals = 0, flipped = 0;
   for (const auto& r : this->Receivers)
   {
-    nonFinite += r->Surface.NonFinitePoints;
+    nonFinite += r->Surface.UnusablePoints;
     undefinedNormals += r->Surface.UndefinedNormals;
     flipped += r->Surface.FlippedNormals;
   }
@@ -882,7 +882,7 @@ void vtkAperturePrecompute::vtkRun::Warn()
   {
     vtkWarningWithObjectMacro(
       this->Self, << nonFinite
-                  << " point(s) are not finite (NaN or infinite); they get a "
+                  << " point(s) are not finite (NaN, infinite or larger than 1e16); they get a "
                      "closed aperture and no cell that uses them casts shadows.");
   }
   if (undefinedNormals > 0)

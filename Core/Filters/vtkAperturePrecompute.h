@@ -68,7 +68,8 @@
  * batches of about a million rays; progress is reported and AbortExecute checked between
  * batches. An aborted run produces an empty output.
  *
- * Points that are not finite, or whose normal is undefined, get a closed aperture (r = 0) with
+ * Points that are not finite (or larger than 1e16, beyond what Embree traces), or whose normal
+ * is undefined, get a closed aperture (r = 0) with
  * BentNormal (0, 0, 1) and one warning. Empty input, input without polygons or strips, a cell
  * with a point id outside the points, image data that is not a 2D grid with one-component
  * scalars, and Embree failures are errors.

@@ -114,6 +114,11 @@ bool vtkApertureSceneSurfaces::Build(const std::vector<Receiver>& receivers,
   const std::vector<vtkPolyData*>& occluders, const Settings& settings,
   std::vector<vtkApertureSurface>& occluderSurfaces, std::string& error)
 {
+  if (!(settings.RayOffset >= 0.0)) // the filters' setters clamp it, but let NaN through
+  {
+    error = "RayOffset is not a number.";
+    return false;
+  }
   double origin[3];
   SceneOrigin(receivers, occluders, settings.HeightScale, origin);
   std::string problem;

@@ -33,9 +33,11 @@
 constexpr std::uint32_t vtkApertureSurface::NoVertex;
 
 //------------------------------------------------------------------------------
-bool vtkApertureSurface::IsFinite(const double p[3])
+bool vtkApertureSurface::IsUsable(const double p[3])
 {
-  return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+  // Written so that NaN fails too.
+  return std::abs(p[0]) <= LargestCoordinate && std::abs(p[1]) <= LargestCoordinate &&
+    std::abs(p[2]) <= LargestCoordinate;
 }
 
 //------------------------------------------------------------------------------
@@ -124,7 +126,7 @@ void vtkApertureSurface::ExpandBounds(vtkPolyData* input, double bounds[6])
     {
       const double p[3] = { static_cast<double>(tuple[0]), static_cast<double>(tuple[1]),
         static_cast<double>(tuple[2]) };
-      if (!IsFinite(p))
+      if (!IsUsable(p))
       {
         continue;
       }
@@ -191,7 +193,7 @@ void vtkApertureSurface::Reset(vtkIdType inputPoints)
   this->StripCorners.clear();
   this->StripTriangles.clear();
   this->NormalsComputed = false;
-  this->NonFinitePoints = 0;
+  this->UnusablePoints = 0;
   this->UndefinedNormals = 0;
   this->FlippedNormals = 0;
   this->SplitPoints = 0;
@@ -285,15 +287,15 @@ void vtkApertureSurface::KeepInputs(vtkPolyData* input)
     }
   }
   this->SplitPoints = std::count(split.begin(), split.end(), 1);
-  this->NonFinitePoints = 0;
+  this->UnusablePoints = 0;
   this->UndefinedNormals = 0;
   for (vtkIdType i = 0; i < n; ++i)
   {
     double p[3];
     input->GetPoint(i, p);
     const vtkIdType point = this->InputPoints[i];
-    const bool finite = IsFinite(p);
-    this->NonFinitePoints += point == Invalid && !finite ? 1 : 0;
+    const bool finite = IsUsable(p);
+    this->UnusablePoints += point == Invalid && !finite ? 1 : 0;
     this->UndefinedNormals += finite && (point == Invalid || (point >= 0 && !this->Valid[point]));
   }
 }

@@ -103,8 +103,13 @@ public:
    * (`globalIds`, one value per input point), or that point's index when `globalIds` is nullptr.
    */
   void KeyByPointIds(vtkDataArray* globalIds);
-  /// Whether a point's three coordinates are finite.
-  static bool IsFinite(const double p[3]);
+  /**
+   * Points whose coordinates go beyond this, or are not finite, cannot be traced: Embree takes
+   * ray origins within ±1.8e18, and a ray starts a few edge lengths from its point.
+   */
+  static constexpr double LargestCoordinate = 1e16;
+  /// Whether a point's three coordinates are finite and within ±LargestCoordinate.
+  static bool IsUsable(const double p[3]);
 
   /// More than this many points, or a third as many triangle corners, cannot be numbered.
   static constexpr std::uint32_t NoVertex = 0xFFFFFFFFu;
@@ -172,9 +177,9 @@ public:
   bool NormalsComputed = false;
 
   ///@{
-  /// Counts for the callers' warnings: receiving input points that are not finite, without a
+  /// Counts for the callers' warnings: receiving input points not usable (IsUsable()), without a
   /// defined normal, with a given normal against their triangles' winding; input points split.
-  vtkIdType NonFinitePoints = 0;
+  vtkIdType UnusablePoints = 0;
   vtkIdType UndefinedNormals = 0;
   vtkIdType FlippedNormals = 0;
   vtkIdType SplitPoints = 0;

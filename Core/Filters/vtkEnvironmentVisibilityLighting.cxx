@@ -118,6 +118,21 @@ bool CheckEnvironment(vtkObject* self, vtkImageData* environment)
   return true;
 }
 
+// The turns and the exposure are finite; false with an error (NaN would light every point NaN).
+bool CheckSettings(vtkEnvironmentVisibilityLighting* self)
+{
+  std::vector<double> values = { self->GetAzimuth(), self->GetExposure() };
+  values.insert(values.end(), self->GetOrientation(), self->GetOrientation() + 9);
+  values.insert(values.end(), self->GetObjectRotation(), self->GetObjectRotation() + 9);
+  if (!std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); }))
+  {
+    vtkErrorWithObjectMacro(
+      self, "Azimuth, Exposure, Orientation and ObjectRotation must be finite.");
+    return false;
+  }
+  return true;
+}
+
 // L_j w_j / pi for every direction j: the environment's mean radiance over the direction's cell
 // (the directions turned into the world by `rotation`, where the environment is).
 std::vector<float> DirectionRadiance(
@@ -301,7 +316,8 @@ int vtkEnvironmentVisibilityLighting::RequestData(
   }
   // 1. The visibility matrix and the environment, checked.
   Visibility visibility;
-  if (!FindVisibility(this, input, visibility) || !CheckEnvironment(this, environment))
+  if (!CheckSettings(this) || !FindVisibility(this, input, visibility) ||
+    !CheckEnvironment(this, environment))
   {
     return 0;
   }

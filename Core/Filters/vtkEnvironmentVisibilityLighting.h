@@ -34,7 +34,8 @@
  * of Exposure or Gamma only recomputes the colours. Nor does a rigid motion of the object
  * (Sattler et al. 2004, §6): the visibility stays in the object's coordinates and
  * ObjectRotation turns its directions into the world before the environment is looked up;
- * translations do not matter for a distant environment.
+ * translations do not matter for a distant environment. An Azimuth, Exposure, Orientation or
+ * ObjectRotation that is not finite is an error.
  *
  * @sa vtkOcclusionQueryVisibility vtkEnvironmentMap vtkOpenEXRReader
  */

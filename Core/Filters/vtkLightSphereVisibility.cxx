@@ -435,11 +435,12 @@ int vtkLightSphereVisibility::RequestData(
   }
   // 4. The output, and a word on points left out.
   this->WriteOutputs(input, output, sphere, directions);
-  if (this->Internals->Receivers.NonFinitePoints > 0)
+  if (this->Internals->Receivers.UnusablePoints > 0)
   {
-    vtkWarningMacro(<< this->Internals->Receivers.NonFinitePoints
-                    << " point(s) are not finite (NaN or infinite); they see nothing, and no "
-                       "cell that uses them casts shadows.");
+    vtkWarningMacro(
+      << this->Internals->Receivers.UnusablePoints
+      << " point(s) are not finite (NaN, infinite or larger than 1e16); they see nothing, and no "
+         "cell that uses them casts shadows.");
   }
   return 1;
 }

@@ -353,7 +353,9 @@ float sphericalCapSimplifiedShadowFactor(float rp, float rl, float d)
 // caller's to test.
 float sphericalCapClampLightRadius(float rl)
 {
-  return clamp(rl, sphericalCapMinimumLightRadius, sphericalCapMaximumLightRadius);
+  // As in C++: NaN gets the smallest radius (clamp() leaves NaN undefined).
+  return rl > sphericalCapMinimumLightRadius ? min(rl, sphericalCapMaximumLightRadius)
+                                             : sphericalCapMinimumLightRadius;
 }
 
 // The middle of the overlap of crossing caps, light and aperture, along the great circle through

@@ -141,6 +141,13 @@ void TestErrors()
   mixed->SetBlock(1, grid);
   ExpectError(mixed, "vtkPolyData leaves", "composite with an unstructured grid");
 
+  // The setters clamp RayOffset but let NaN through.
+  Run nanOffset(Plane());
+  nanOffset.Filter->SetRayOffset(std::numeric_limits<double>::quiet_NaN());
+  Check(!nanOffset.Update() &&
+      nanOffset.Observer->GetErrorMessage().find("RayOffset") != std::string::npos,
+    "a NaN RayOffset is an error");
+
   // Embree refuses a malformed device configuration.
   Run embree(Plane());
   embree.Filter->SetEmbreeConfiguration("threads=banana");
@@ -154,10 +161,12 @@ void TestWarnings()
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
 
-  // NaN and infinite points: closed caps with a defined axis, the rest of the plane open.
+  // NaN, infinite and vast points (beyond what Embree traces): closed caps with a defined axis,
+  // the rest of the plane open.
   auto plane = Plane();
   plane->GetPoints()->SetPoint(60, nan, 0, 0);
   plane->GetPoints()->SetPoint(17, 0, inf, 0);
+  plane->GetPoints()->SetPoint(33, 0, 0, -3e38);
   Run nonFinite(plane);
   Check(nonFinite.Update() && nonFinite.Observer->GetWarning() &&
       nonFinite.Observer->GetWarningMessage().find("not finite") != std::string::npos,
@@ -169,15 +178,16 @@ void TestWarnings()
   bool rest = true;
   for (vtkIdType i = 0; i < plane->GetNumberOfPoints(); ++i)
   {
-    if (i != 60 && i != 17)
+    if (i != 60 && i != 17 && i != 33)
     {
       rest = rest && std::abs(radius->GetTuple1(i) - 0.5 * Pi) < 1e-6;
     }
   }
   double axis[3];
   bent->GetTuple(60, axis);
-  Check(radius->GetTuple1(60) == 0.0 && radius->GetTuple1(17) == 0.0 && axis[2] == 1.0,
-    "NaN/Inf points get a closed cap around +z");
+  Check(radius->GetTuple1(60) == 0.0 && radius->GetTuple1(17) == 0.0 &&
+      radius->GetTuple1(33) == 0.0 && axis[2] == 1.0,
+    "NaN/Inf/vast points get a closed cap around +z");
   Check(rest, "the other points are right");
 
   // Degenerate and zero-area triangles: ignored as occluders; points only they use are closed,

@@ -641,6 +641,9 @@ void TestShading()
       vtkSphericalCap::LightCoverage(cap, n, 1.0, zero, 0.1) == 0.0 &&
       vtkSphericalCap::SkyTransfer(nan, 0.0, 1.0, true) == 0.0,
     "shading with bad input: 0", 0, 0, 0, 0, 0);
+  Check(vtkSphericalCap::ClampLightRadius(nan) == vtkSphericalCap::MinimumLightRadius &&
+      std::isfinite(vtkSphericalCap::LightTransfer(cap, moment, n, n, 1.0, l, nan)),
+    "a NaN light radius: the smallest one", 0, 0, 0, 0, 0);
 }
 
 int TestSphericalCap(int, char*[])

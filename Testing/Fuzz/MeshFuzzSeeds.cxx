@@ -144,6 +144,10 @@ std::vector<FuzzSeed> MeshFuzzSeeds()
       "property float z\nelement face 5\nproperty list uchar int vertex_indices\nend_header\n"
       "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 1\n4 0 3 2 1\n3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n"),
     Seed("pyramid-strips", PLY, BinaryPLY()),
+    // Finite coordinates whose span overflows a float.
+    Seed("pyramid-vast", OBJ,
+      "v -3e38 0 0\nv 3e38 0 0\nv 3e38 3e38 0\nv -3e38 3e38 0\nv 0 1 -3e38\n"
+      "f 1 4 3 2\nf 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\n"),
     Seed("pyramid-ascii", VTP, Vtp(vtkXMLWriter::Ascii)),
     Seed("pyramid-base64", VTP, Vtp(vtkXMLWriter::Binary)),
     Seed("pyramid-appended", VTP, Vtp(vtkXMLWriter::Appended)),
