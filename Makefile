@@ -81,7 +81,7 @@ report: build
 	@. $(BUILD_DIR)/env.sh && $(XVFB) $(PYTHON) Utilities/Evaluation/performance.py \
 	  --bin $(BUILD_DIR)/bin --out docs --max-level $(REPORT_MAX_LEVEL)
 
-# libFuzzer on the EXR and the mesh reading paths, with AddressSanitizer and
+# libFuzzer on the EXR, the mesh and the volume reading paths, with AddressSanitizer and
 # UndefinedBehaviorSanitizer, in a Clang build of its own, for FUZZ_SECONDS (60) each from random
 # seed FUZZ_SEED (0: a new one each run); the corpora and any crash-* files stay in
 # $(FUZZ_DIR)/corpus-<target> and $(FUZZ_DIR). The DEM target is run by hand
@@ -90,7 +90,7 @@ report: build
 FUZZ_DIR ?= build-fuzz
 FUZZ_SECONDS ?= 60
 FUZZ_SEED ?= 0
-FUZZERS = FuzzOpenEXRReader FuzzMeshReaders
+FUZZERS = FuzzOpenEXRReader FuzzMeshReaders FuzzVolumeReaders
 # A request for more memory than exists gets null, as glibc's malloc gives it in a release build
 # (a damaged array in a file can ask VTK's readers for petabytes; they report it). Memory really
 # used stays limited (rss_limit_mb). Leaks in the system's and VTK 9.1's own failure paths are

@@ -10,6 +10,7 @@
 =========================================================================*/
 #include "ApertureRenderInput.h"
 #include "ApertureRenderVolume.h"
+#include "ApertureRenderVolumeFile.h"
 
 #include "ApertureRenderFuji.h"
 #include "ApertureRenderMesh.h"

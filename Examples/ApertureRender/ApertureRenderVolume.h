@@ -8,10 +8,9 @@
   See LICENSE for details.
 
 =========================================================================*/
-// aperture-render's volumes: reading CT and MR files (.vti, .mha/.mhd, .nrrd/.nhdr, .nii and
-// .nii.gz through VTK's readers, DICOM series from a folder through vtkApertureDICOMReader), an
-// opacity preset or ramp, and the picture drawn by
-// vtkApertureVolumeMapper (or, with --iso, an isosurface handed to the mesh pipeline).
+// aperture-render's volumes (read by ApertureRenderVolumeFile.h): an opacity preset or ramp, and
+// the picture drawn by vtkApertureVolumeMapper (or, with --iso, an isosurface handed to the mesh
+// pipeline).
 
 #ifndef ApertureRenderVolume_h
 #define ApertureRenderVolume_h
@@ -23,19 +22,6 @@ namespace ApertureRender
 struct Input;
 struct Options;
 class MessageCapture;
-
-// Whether `name` has the extension of a volume format (a .vti may still hold a height field).
-bool IsVolumeFile(const std::string& name);
-
-// Reads a volume into input.Volume; a 2D .vti (one slice) becomes input.Heights instead. False
-// with one sentence in `error` when the file cannot be used.
-bool LoadVolume(
-  const std::string& name, MessageCapture& messages, Input& input, std::string& error);
-
-// Reads the DICOM series of a folder into input.Volume. False with one sentence in `error` when
-// the folder holds none, several, or one with missing slices.
-bool LoadDICOM(
-  const std::string& folder, MessageCapture& messages, Input& input, std::string& error);
 
 // --iso: the isosurface of input.Volume at options.Iso becomes input.Mesh. False with one
 // sentence in `error` when it is empty.

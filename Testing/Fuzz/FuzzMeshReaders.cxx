@@ -17,6 +17,7 @@
 // safe to print (FuzzMessages.h).
 
 #include "FuzzMeshReaders.h"
+#include "FuzzFile.h"
 #include "FuzzMessages.h"
 
 #include "ApertureRenderInput.h"
@@ -29,12 +30,8 @@
 #include "vtkNew.h"
 #include "vtkObject.h"
 
-#include <unistd.h>
-
 #include <cstddef>
 #include <cstdint>
-#include <cstdio>
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -62,23 +59,14 @@ void PackBeyondOneCap(vtkDataSet* mesh)
 bool ReadFuzzMesh(
   const std::uint8_t* data, std::size_t size, ApertureRender::Input& input, std::string& error)
 {
-  static const char* const extensions[] = { ".obj", ".ply", ".vtp" };
-  if (size == 0)
+  const FuzzFile file(data, size, { ".obj", ".ply", ".vtp" });
+  if (file.GetName().empty())
   {
     error = "no format byte";
     return false;
   }
-  const std::string extension = extensions[data[0] % 3];
-  const std::string name =
-    "/tmp/aperture-fuzz-" + std::to_string(static_cast<long>(getpid())) + extension;
-  {
-    std::ofstream file(name, std::ios::binary);
-    file.write(reinterpret_cast<const char*>(data + 1), static_cast<std::streamsize>(size - 1));
-  }
   ApertureRender::MessageCapture messages;
-  const bool read = ApertureRender::LoadMesh(name, extension, messages, input, error);
-  std::remove(name.c_str());
-  return read;
+  return ApertureRender::LoadMesh(file.GetName(), file.GetExtension(), messages, input, error);
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
