@@ -10,6 +10,8 @@
 =========================================================================*/
 #include "ApertureRenderMetaImage.h"
 
+#include "ApertureRenderText.h"
+
 #include "vtkApertureText.h"
 
 #include <vtksys/FStream.hxx>
@@ -119,13 +121,8 @@ bool CheckMetaImage(const std::string& name, std::string& error)
   long long dims = 0;
   for (std::string line; std::getline(lines, line);)
   {
-    std::string problem;
-    for (const char c : line)
-    {
-      problem = (c < 32 || c == 127) && c != '\t' && c != '\r'
-        ? "its header holds a byte that is not printable text"
-        : problem;
-    }
+    std::string problem =
+      IsPrintableText(line) ? "" : "its header holds a byte that is not printable text";
     const size_t equals = line.find('=');
     const std::string key = Trim(line.substr(0, equals));
     if (problem.empty() && Trim(line).empty())

@@ -10,6 +10,8 @@
 =========================================================================*/
 #include "ApertureRenderNRRD.h"
 
+#include "ApertureRenderText.h"
+
 #include "vtkApertureText.h"
 
 #include <vtksys/FStream.hxx>
@@ -139,12 +141,9 @@ bool CheckNRRD(const std::string& name, std::string& error)
     {
       continue; // a comment, which the reader skips
     }
-    for (const char c : line)
+    if (!IsPrintableText(line))
     {
-      if ((c < 32 || c == 127) && c != '\t' && c != '\r')
-      {
-        why = "its header holds a byte that is not printable text";
-      }
+      why = "its header holds a byte that is not printable text";
     }
     const size_t colon = line.find(": ");
     if (why.empty() && colon != std::string::npos)

@@ -10,6 +10,8 @@
 =========================================================================*/
 #include "ApertureRenderPLY.h"
 
+#include "ApertureRenderText.h"
+
 #include "vtkApertureText.h"
 #include "vtkCellArray.h"
 
@@ -157,18 +159,13 @@ bool IsLineText(const std::string& text)
   size_t line = 0;
   for (const char c : text)
   {
-    const auto u = static_cast<unsigned char>(c);
-    if ((u < 0x20 && c != '\t' && c != '\r' && c != '\n') || u >= 0x7f)
-    {
-      return false;
-    }
     line = c == '\n' ? 0 : line + 1;
     if (line > 4000)
     {
       return false;
     }
   }
-  return true;
+  return IsPrintableText(text);
 }
 
 bool WalkBinary(const std::string& bytes, size_t offset, const std::vector<Element>& elements,
