@@ -25,6 +25,7 @@ vtkStandardNewMacro(vtkSphericalCap);
 // Defined here too for C++11/14, where std::min and std::max taking it by reference need a
 // definition.
 constexpr double vtkSphericalCap::MinimumLightRadius;
+constexpr double vtkSphericalCap::CentroidTolerance;
 constexpr double vtkSphericalCap::MaximumLightRadius;
 
 namespace
@@ -295,7 +296,8 @@ bool vtkSphericalCap::IntersectionCentroid(
 {
   vtkSphericalCap::IntersectionMoment(a1, r1, a2, r2, c);
   const double n = vtkMath::Norm(c);
-  if (!(n > 0.0))
+  const double scale = std::min(SolidAngleFromCapRadius(r1), SolidAngleFromCapRadius(r2));
+  if (!(n > CentroidTolerance * scale))
   {
     c[0] = c[1] = c[2] = 0.0;
     return false;
@@ -581,6 +583,8 @@ std::string vtkSphericalCap::GetGLSLConstants()
        << "const float sphericalCapMinimumLightRadius = " << static_cast<float>(MinimumLightRadius)
        << ";\n"
        << "const float sphericalCapMaximumLightRadius = " << static_cast<float>(MaximumLightRadius)
+       << ";\n"
+       << "const float sphericalCapCentroidTolerance = " << static_cast<float>(CentroidTolerance)
        << ";\n";
   return glsl.str();
 }

@@ -87,7 +87,9 @@ public:
 
   /**
    * Unit direction of IntersectionMoment(), the intersection's centroid direction. Returns false
-   * and sets c = 0 when the intersection is empty.
+   * and sets c = 0 when the intersection is empty or has no centroid: a moment under
+   * CentroidTolerance times the smaller cap's solid angle is rounding (caps of equal radius on
+   * opposite axes meet in a band whose moment vanishes; its direction would be noise).
    */
   static bool IntersectionCentroid(
     const double a1[3], double r1, const double a2[3], double r2, double c[3]);
@@ -148,6 +150,12 @@ public:
   static constexpr double MinimumLightRadius = 1e-4;
   static constexpr double MaximumLightRadius = 1.5707963267948966;
   ///@}
+
+  /**
+   * The moment, relative to the smaller cap's solid angle, under which IntersectionCentroid()
+   * finds no centroid: well above single precision's rounding.
+   */
+  static constexpr double CentroidTolerance = 1e-5;
 
   /**
    * A light radius as the shading functions use it: within [MinimumLightRadius,

@@ -9,7 +9,7 @@ sphericalCapCap apertureSphereLightCap(vec3 L, float R, float D)
   float s = D > R ? R / D : 1.0;
   float c = D > R ? sqrt((D - R) * (D + R)) / D : 0.0;
   float r = sphericalCapAtan2(s, c);
-  if (!(r > sphericalCapMinimumLightRadius))
+  if (isnan(r) || r <= sphericalCapMinimumLightRadius)
   {
     return sphericalCapMakeCap(L, sphericalCapClampLightRadius(r));
   }

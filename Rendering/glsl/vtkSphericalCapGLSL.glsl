@@ -8,8 +8,10 @@ const float sphericalCapPi = 3.14159265358979;
 
 // A software rasteriser's built-in trigonometry (llvmpipe's) reduces any argument's range and
 // costs as much as all the rest of the shading, and its atan() is off by a constant 2e-5
-// relative, which the cancellations in the lens moment amplify: the shading uses these minimax
-// polynomials instead.
+// relative, which the cancellations in the lens moment amplify; NVIDIA's sine is exact only to
+// 1e-7 absolute, a thousandth of a small cap's: the shading uses these minimax polynomials
+// instead. NVIDIA's compiler also folds !(x > 0.0) into x <= 0.0, which NaN passes (GLSL leaves
+// NaN comparisons unspecified): NaN is tested with isnan().
 
 // sin(x) for |x| <= pi/2 (relative error 5e-9).
 float sphericalCapSin(float x)
@@ -21,6 +23,13 @@ float sphericalCapSin(float x)
   return x * (p * u + 0.999999995);
 }
 
+// sin(x) for 0 <= x <= pi, by sin(x) = sin(pi - x): relative precision near both ends, where a
+// GPU's built-in sine may have an absolute one only (NVIDIA's: 1e-7 off at sin(1e-5)).
+float sphericalCapSinToPi(float x)
+{
+  return sphericalCapSin(x <= 0.5 * sphericalCapPi ? x : sphericalCapPi - x);
+}
+
 // atan(y, x) with full relative precision (0 when both are 0; relative error 1.5e-8 before
 // rounding).
 float sphericalCapAtan2(float y, float x)
@@ -28,7 +37,7 @@ float sphericalCapAtan2(float y, float x)
   float ax = abs(x);
   float ay = abs(y);
   float hi = max(ax, ay);
-  if (!(hi > 0.0))
+  if (isnan(hi) || hi <= 0.0)
   {
     return 0.0;
   }
@@ -68,7 +77,7 @@ float sphericalCapSolidAngle(float r)
 
 float sphericalCapRadiusFromSolidAngle(float a)
 {
-  if (!(a > 0.0))
+  if (isnan(a) || a <= 0.0)
   {
     return 0.0;
   }
@@ -252,7 +261,7 @@ bool sphericalCapUnitAxis(vec3 v, out vec3 u)
 {
   float n = length(v);
   u = vec3(0.0);
-  if (!(n > 0.0) || isinf(n) || isnan(n))
+  if (isnan(n) || n <= 0.0 || isinf(n))
   {
     return false;
   }
@@ -282,7 +291,8 @@ vec3 sphericalCapIntersectionCentroid(vec3 a1, float r1, vec3 a2, float r2)
 {
   vec3 m = sphericalCapIntersectionMoment(a1, r1, a2, r2);
   float n = length(m);
-  return n > 0.0 ? m / n : vec3(0.0);
+  float scale = min(sphericalCapSolidAngle(r1), sphericalCapSolidAngle(r2));
+  return n > sphericalCapCentroidTolerance * scale ? m / n : vec3(0.0);
 }
 
 float sphericalCapSphereLightIrradiance(float sigma, float theta)
@@ -297,15 +307,15 @@ float sphericalCapSphereLightIrradiance(float sigma, float theta)
   {
     return 0.0;
   }
-  float sinSigma = sin(sigma);
+  float sinSigma = sphericalCapSin(sigma);
   float sin2Sigma = sinSigma * sinSigma;
-  float cosTheta = cos(theta);
-  float sinTheta = sin(theta);
+  float cosTheta = sphericalCapSin(0.5 * sphericalCapPi - theta);
+  float sinTheta = sphericalCapSinToPi(theta);
   if (cosTheta * cosTheta > sin2Sigma || sinTheta <= 0.0)
   {
     return sphericalCapPi * sin2Sigma * max(cosTheta, 0.0);
   }
-  float x = cos(sigma) / sinSigma;
+  float x = sphericalCapSin(0.5 * sphericalCapPi - sigma) / sinSigma;
   float y = clamp(-x * cosTheta / sinTheta, -1.0, 1.0);
   float root = sqrt(1.0 - y * y);
   float e = (cosTheta * sphericalCapAtan2(root, y) - x * sinTheta * root) * sin2Sigma +
@@ -323,12 +333,14 @@ float sphericalCapSimplifiedRamp(float rp, float rl, float d)
     float c = cos(0.5 * d) / cos(0.5 * (rp - rl));
     return clamp(c * c, 0.0, 1.0);
   }
-  float den = sin(max(rp, rl)) * sin(min(rp, rl));
-  if (!(den > 0.0))
+  float den = sphericalCapSinToPi(max(rp, rl)) * sphericalCapSinToPi(min(rp, rl));
+  if (isnan(den) || den <= 0.0)
   {
     return d < rp ? 1.0 : 0.0;
   }
-  return clamp(sin(0.5 * (d + sum)) * sin(0.5 * (sum - d)) / den, 0.0, 1.0);
+  // (d + sum)/2 lies in [0, pi) and (sum - d)/2 in (-pi/2, pi/2).
+  return clamp(sphericalCapSinToPi(0.5 * (d + sum)) * sphericalCapSin(0.5 * (sum - d)) / den,
+    0.0, 1.0);
 }
 
 float sphericalCapSimplifiedShadowFactor(float rp, float rl, float d)
@@ -365,7 +377,7 @@ float sphericalCapClampLightRadius(float rl)
 vec3 sphericalCapOverlapMiddle(sphericalCapCap light, sphericalCapCap aperture, float hc, float hs)
 {
   float sinD = 2.0 * hc * hs;
-  if (!(sinD > 1e-6))
+  if (isnan(sinD) || sinD <= 1e-6)
   {
     return light.axis;
   }

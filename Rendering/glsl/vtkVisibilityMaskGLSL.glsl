@@ -34,7 +34,7 @@ vec2 visibilityMaskDiskToSquare(vec2 p)
 int visibilityMaskCellInFrame(vec3 t, vec3 b, vec3 n, vec3 w)
 {
   float z = dot(w, n);
-  if (!(z >= 0.0))
+  if (isnan(z) || z < 0.0)
   {
     return -1;
   }

@@ -188,6 +188,10 @@ int TestDynamicVisibility(int argc, char* argv[])
     // The visible directions of the ball's top point, summed.
     vtkPolyData* out = visibility->GetOutput();
     vtkDataArray* values = out->GetPointData()->GetArray("Visibility");
+    if (!values)
+    {
+      return 0.0; // the filter failed and said why
+    }
     vtkIdType top = 0;
     for (vtkIdType i = 1; i < out->GetNumberOfPoints(); ++i)
     {

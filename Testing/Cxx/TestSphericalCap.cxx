@@ -503,6 +503,19 @@ void TestEdgeCases()
     const bool found = vtkSphericalCap::IntersectionCentroid(a, 0.2, up, 1.8, c);
     Check(found && std::abs(c[1] - 1.0) < 1e-12, "centroid of nested caps", 0.2, 1.8, 0, c[1], 1);
   }
+  // Equal caps on opposite axes meet in a band about the equator: no centroid, whatever the
+  // rounding of the axes (sin(pi) is not 0), while a band reaching further down has one, down.
+  for (const double r : { 1.7, 2.0, 3.0 })
+  {
+    const double down[3] = { std::sin(Pi), 0.0, std::cos(Pi) };
+    double c[3] = { 1.0, 1.0, 1.0 };
+    const bool found = vtkSphericalCap::IntersectionCentroid(up, r, down, r, c);
+    Check(
+      !found && c[0] == 0.0 && c[1] == 0.0 && c[2] == 0.0, "band: no centroid", r, r, Pi, c[0], 0);
+    const bool offCentre = vtkSphericalCap::IntersectionCentroid(up, r, down, r - 0.01, c);
+    Check(offCentre && std::abs(c[2] + 1.0) < 1e-9, "off-centre band: centroid down", r, r - 0.01,
+      Pi, c[2], -1);
+  }
 }
 
 // The moment turns with the caps.
