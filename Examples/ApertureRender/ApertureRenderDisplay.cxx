@@ -11,12 +11,15 @@
 #include "ApertureRenderDisplay.h"
 
 #include "vtkApertureText.h"
+#include "vtkRenderWindow.h"
 
 #include <X11/Xlib.h>
 
 #include <cstdlib>
 
 namespace ApertureRender
+{
+namespace
 {
 void* OpenDisplay(std::string& error)
 {
@@ -39,6 +42,19 @@ void* OpenDisplay(std::string& error)
     return nullptr;
   }
   return display;
+}
+}
+
+bool AttachDisplay(vtkRenderWindow* window, void*& display, std::string& error)
+{
+  display = nullptr;
+  if (!window->IsA("vtkXOpenGLRenderWindow"))
+  {
+    return true;
+  }
+  display = OpenDisplay(error);
+  window->SetDisplayId(display);
+  return display != nullptr;
 }
 
 void CloseDisplay(void* display)

@@ -458,12 +458,10 @@ void View::PlaceCamera()
 
 bool View::Open(std::string& error)
 {
-  this->Display = OpenDisplay(error);
-  if (!this->Display)
+  if (!AttachDisplay(this->Window, this->Display, error))
   {
     return false;
   }
-  this->Window->SetDisplayId(this->Display);
   this->Window->SetOffScreenRendering(!this->Settings.Interactive);
   if (!this->Window->SupportsOpenGL())
   {

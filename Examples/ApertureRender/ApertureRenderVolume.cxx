@@ -253,14 +253,13 @@ int ShowVolume(const Options& options, const Input& input, MessageCapture& messa
   }
   std::string error;
   vtkSmartPointer<vtkVolumeProperty> property = MakeProperty(options, input.Volume, error);
-  void* display = property ? OpenDisplay(error) : nullptr;
-  if (!display)
+  vtkNew<vtkRenderWindow> window;
+  void* display = nullptr;
+  if (!property || !AttachDisplay(window, display, error))
   {
     std::cerr << "aperture-render: " << error << "\n";
     return property ? 1 : 2;
   }
-  vtkNew<vtkRenderWindow> window;
-  window->SetDisplayId(display);
   window->SetSize(options.Width, options.Height);
   window->SetOffScreenRendering(!options.Interactive);
   vtkNew<vtkRenderer> renderer;
