@@ -13,6 +13,7 @@
 #include "ApertureRenderInput.h"
 #include "ApertureRenderMessages.h"
 #include "ApertureRenderOptions.h"
+#include "ApertureRenderXMLBlocks.h"
 
 #include "vtkApertureText.h"
 #include "vtkCellArray.h"
@@ -134,6 +135,12 @@ vtkSmartPointer<vtkDataObject> ReadCache(const std::string& path, const std::str
   }
   reader->SetFileName(path.c_str());
   messages.Clear();
+  std::string damage;
+  if (!CheckCompressedBlocks(reader, path, damage))
+  {
+    note = "the cache " + damage + "; recomputing";
+    return nullptr;
+  }
   reader->Update();
   auto* data = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
   if (!messages.FirstError().empty() || !data)

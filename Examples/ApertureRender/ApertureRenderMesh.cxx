@@ -14,6 +14,7 @@
 #include "ApertureRenderMessages.h"
 #include "ApertureRenderOBJ.h"
 #include "ApertureRenderPLY.h"
+#include "ApertureRenderXMLBlocks.h"
 
 #include "vtkApertureCellCheck.h"
 #include "vtkApertureText.h"
@@ -259,7 +260,7 @@ bool CheckVTP(vtkXMLPolyDataReader* reader, MessageCapture& messages, const std:
       vtkApertureText::Quote(shared) + ")";
     return false;
   }
-  return CheckVTPSizes(root, data, name, error);
+  return CheckVTPSizes(root, data, name, error) && CheckCompressedBlocks(reader, name, error);
 }
 
 // Updates a reader; false with a sentence when it reports an error or runs out of memory (a

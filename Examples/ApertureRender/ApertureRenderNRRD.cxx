@@ -16,6 +16,7 @@
 
 #include <vtksys/FStream.hxx>
 
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <sstream>
@@ -64,6 +65,28 @@ bool IntegerIn(const std::string& word, long long low, long long high, long long
   return end != word.c_str() && *end == '\0' && value >= low && value <= high;
 }
 
+// True when `words` are one finite, non-zero number for each of `dimension` axes (NaN, as NRRD
+// writes it, for the components axis of a 4-D file).
+bool SpacingsFit(const std::vector<std::string>& words, long long dimension)
+{
+  if (static_cast<long long>(words.size()) != dimension)
+  {
+    return false;
+  }
+  for (size_t i = 0; i < words.size(); ++i)
+  {
+    char* end = nullptr;
+    const double value = std::strtod(words[i].c_str(), &end);
+    const bool components = dimension == 4 && i == 0 && std::isnan(value);
+    if (end == words[i].c_str() || *end != '\0' ||
+      (!components && (!std::isfinite(value) || value == 0.0)))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 // Checks one "field: description" line; `dimension` and `sizes` carry what earlier lines set.
 bool CheckField(const std::string& field, const std::string& description, long long& dimension,
   bool& sizes, std::string& why)
@@ -100,6 +123,12 @@ bool CheckField(const std::string& field, const std::string& description, long l
       }
     }
     sizes = true;
+  }
+  else if (field == "spacings" && !SpacingsFit(words, dimension))
+  {
+    // vtkNrrdReader crashes on a spacing of 0 or one it cannot parse.
+    why = "its spacings are not one finite, non-zero number per axis";
+    return false;
   }
   else if ((field == "space origin" || field == "data file" || field == "datafile") &&
     words.empty())

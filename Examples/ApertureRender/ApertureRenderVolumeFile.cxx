@@ -15,6 +15,7 @@
 #include "ApertureRenderMetaImage.h"
 #include "ApertureRenderNIfTI.h"
 #include "ApertureRenderNRRD.h"
+#include "ApertureRenderXMLBlocks.h"
 
 #include "vtkApertureDICOMReader.h"
 #include "vtkApertureText.h"
@@ -160,6 +161,11 @@ bool LoadVolume(const std::string& name, MessageCapture& messages, Input& input,
   }
   vtkSmartPointer<vtkAlgorithm> reader = VolumeReader(name);
   messages.Clear();
+  auto* xml = vtkXMLReader::SafeDownCast(reader);
+  if (xml && !CheckCompressedBlocks(xml, name, error))
+  {
+    return false;
+  }
   reader->Update();
   auto* image = vtkImageData::SafeDownCast(reader->GetOutputDataObject(0));
   if (!messages.FirstError().empty() || !image || !image->GetPointData()->GetScalars())

@@ -101,7 +101,7 @@ void AddBeyondOneCap(vtkPolyData* pyramid)
   pyramid->GetPointData()->AddArray(masks);
 }
 
-std::string Vtp(int mode, bool beyondOneCap = false)
+std::string Vtp(int mode, bool beyondOneCap = false, bool compressed = false)
 {
   vtkNew<vtkXMLPolyDataWriter> writer;
   vtkNew<vtkPolyData> pyramid = Pyramid();
@@ -112,7 +112,17 @@ std::string Vtp(int mode, bool beyondOneCap = false)
   writer->SetInputData(pyramid);
   writer->WriteToOutputStringOn();
   writer->SetDataMode(mode);
-  writer->SetCompressorTypeToNone();
+  if (compressed)
+  {
+    // Small blocks, so that the arrays have several and their headers are worth damaging.
+    writer->SetCompressorTypeToZLib();
+    writer->SetBlockSize(64);
+    writer->EncodeAppendedDataOff();
+  }
+  else
+  {
+    writer->SetCompressorTypeToNone();
+  }
   writer->Write();
   return writer->GetOutputString();
 }
@@ -151,6 +161,7 @@ std::vector<FuzzSeed> MeshFuzzSeeds()
     Seed("pyramid-ascii", VTP, Vtp(vtkXMLWriter::Ascii)),
     Seed("pyramid-base64", VTP, Vtp(vtkXMLWriter::Binary)),
     Seed("pyramid-appended", VTP, Vtp(vtkXMLWriter::Appended)),
+    Seed("pyramid-zlib-appended", VTP, Vtp(vtkXMLWriter::Appended, false, true)),
     Seed("pyramid-horizons-masks", VTP, Vtp(vtkXMLWriter::Ascii, true)),
   };
 }

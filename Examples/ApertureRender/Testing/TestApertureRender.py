@@ -9,6 +9,7 @@ HDR environment as the sky, and bad input: each bad case must end with exit stat
 exactly one line on stderr that says what is wrong, never a crash.
 """
 
+import base64
 import os
 import re
 import struct
@@ -784,7 +785,8 @@ expect_failure("volume of two components", [path("pair.vti"), "-o", path("x.png"
                "2-component scalars")
 # Headers that VTK 9.1's readers trust: before aperture-render checked them, the first hung it,
 # the second handed a file name to printf as its format, the long name overflowed MetaIO's buffer
-# and FuzzVolumeReaders crashed the NIfTI reader with damaged headers.
+# and FuzzVolumeReaders crashed the NIfTI reader with damaged headers and the NRRD reader with a
+# spacing of 0.
 nrrd = b"NRRD0004\ntype: short\ndimension: 3\nsizes: 10 5 4"
 long_name = (b"ObjectType = Image\nNDims = 3\n" + b"N" * 300 + b" = 1\nDimSize = 2 2 2\n"
              b"ElementType = MET_UCHAR\nElementDataFile = LOCAL\n" + bytes(8))
@@ -801,6 +803,7 @@ for name, data, words in (
         ("cut.nrrd", nrrd, "its header's last line does not end"),
         ("pattern.nrrd", nrrd + b"\ndata file: %n%s 1 5 0\n\n", "lies in several files"),
         ("no-sizes.nrrd", b"NRRD0004\ntype: short\ndimension: 3\n\n", "gives no sizes"),
+        ("spacing.nrrd", nrrd + b"\nspacings: 0 1 1\n\n", "spacings are not one finite"),
         ("long-name.mha", long_name, "a name shorter than 255 characters"),
         ("missing.mha", long_name.replace(b"N" * 300 + b" = 1\n", b"").replace(
             b"LOCAL", b"nowhere.raw"), "'nowhere.raw' does not exist"),
@@ -810,6 +813,65 @@ for name, data, words in (
                    words)
 expect_failure("volume in a surface mode", [mr, "--mode", "horizon", "-o", path("x.png")], 2,
                "volumes take exact, smoothstep, standard or all")
+
+
+# Compressed VTI in each layout VTK writes (inline base64, appended raw or base64; 4- or 8-byte
+# headers) reads; a damaged block header is one error. VTK 9.1 allocated and filled the blocks
+# a damaged count announced (gigabytes), and with no blocks but a partial last one read a block
+# it had no size for (FuzzMeshReaders, on a VTP).
+def compressed_vti(name, layout, header_bytes):
+    writer = vtkXMLImageDataWriter()
+    writer.SetInputData(volume)
+    writer.SetFileName(path(name))
+    writer.SetBlockSize(3000)  # a partial last block
+    writer.SetHeaderTypeToUInt64() if header_bytes == 8 else writer.SetHeaderTypeToUInt32()
+    if layout == "inline":
+        writer.SetDataModeToBinary()
+    else:
+        writer.SetDataModeToAppended()
+        writer.SetEncodeAppendedData(layout == "base64")
+    writer.Write()
+    return path(name)
+
+
+def damage_vti(source, name, word, value):
+    """A copy of `source` with word `word` of its first array's compression header set."""
+    with open(source, "rb") as f:
+        data = f.read()
+    size = 8 if b'header_type="UInt64"' in data else 4
+    if b"<AppendedData" in data:
+        tag = data.index(b"<AppendedData")
+        start = data.index(b"_", tag) + 1
+        encoded = b'encoding="base64"' in data[tag:start]
+    else:
+        start = data.index(b">", data.index(b"<DataArray")) + 1
+        while data[start:start + 1].isspace():
+            start += 1
+        encoded = True
+    stored = 4 * size if encoded else 3 * size  # three header words, base64 in whole groups
+    head = bytearray(base64.b64decode(data[start:start + stored]) if encoded
+                     else data[start:start + stored])
+    head[word * size:(word + 1) * size] = value.to_bytes(size, "little")
+    head = base64.b64encode(bytes(head)) if encoded else bytes(head)
+    return write_bytes(name, data[:start] + head + data[start + stored:])
+
+
+for layout, header_bytes in (("inline", 4), ("raw", 8), ("base64", 4)):
+    name = compressed_vti(f"zlib-{layout}.vti", layout, header_bytes)
+    expect_picture(f"compressed VTI, {layout}", [name, "--size", "200x150"],
+                   needles=(described,))
+    expect_failure(f"compressed VTI, {layout}, damaged block count",
+                   [damage_vti(name, f"count-{layout}.vti", 0, 2**32 - 16), "-o", path("x.png")],
+                   1, "compressed blocks, more than the file holds")
+    expect_failure(f"compressed VTI, {layout}, block size 0",
+                   [damage_vti(name, f"zero-{layout}.vti", 1, 0), "-o", path("x.png")],
+                   1, "its block sizes are inconsistent")
+    expect_failure(f"compressed VTI, {layout}, no blocks but a last one",
+                   [damage_vti(name, f"none-{layout}.vti", 0, 0), "-o", path("x.png")],
+                   1, "its block sizes are inconsistent")
+    expect_failure(f"compressed VTI, {layout}, vast blocks",
+                   [damage_vti(name, f"vast-{layout}.vti", 1, 2**31), "-o", path("x.png")],
+                   1, "its compressed blocks do not fit the file")
 expect_failure("volume preset", [mr, "--volume", "fancy", "-o", path("x.png")], 2,
                "is not ct-bone, ct-skin, mr or LOW:HIGH")
 expect_failure("volume empty isosurface", [mr, "--iso", "1e9", "-o", path("x.png")], 1,
