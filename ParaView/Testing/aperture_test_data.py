@@ -88,3 +88,38 @@ def write_cad_part(path):
     writer.SetFileName(path)
     writer.SetInputData(part.GetOutput())
     writer.Write()
+
+
+
+# The well volume of write_well_volume: its grid, the well's centre, floor, top and radii.
+WELL = {"dimensions": (64, 48, 24), "centre": (40.0, 24.0), "floor": 4.0, "top": 16.0,
+        "radius": 4.0, "ring": 14.0, "block": 100.0, "ring_value": 200.0}
+
+
+def write_well_volume(path):
+    """A .vti volume of unit voxels: a block (value 100) under z = top with a round well down to
+    z = floor, its wall a ring (value 200) out to the ring radius, empty (0) elsewhere. The
+    well's floor sees the sky within atan(radius / depth) of the zenith; with the ring
+    transparent, within atan(ring / depth)."""
+    from vtkmodules.vtkCommonDataModel import vtkImageData
+    from vtkmodules.vtkIOXML import vtkXMLImageDataWriter
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    import numpy as np
+
+    s = WELL
+    nx, ny, nz = s["dimensions"]
+    z, y, x = np.mgrid[0:nz, 0:ny, 0:nx].astype(float)
+    rho = np.hypot(x - s["centre"][0], y - s["centre"][1])
+    values = np.where(z < s["top"], s["block"], 0.0)
+    shaft = (z >= s["floor"]) & (z < s["top"])
+    values[shaft & (rho < s["ring"])] = s["ring_value"]
+    values[shaft & (rho < s["radius"])] = 0.0
+    image = vtkImageData()
+    image.SetDimensions(nx, ny, nz)
+    array = numpy_to_vtk(values.ravel().astype(np.float32), deep=1)
+    array.SetName("density")
+    image.GetPointData().SetScalars(array)
+    writer = vtkXMLImageDataWriter()
+    writer.SetFileName(path)
+    writer.SetInputData(image)
+    writer.Write()

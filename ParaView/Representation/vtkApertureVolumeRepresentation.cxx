@@ -1,0 +1,93 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    vtkApertureVolumeRepresentation.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkApertureVolumeRepresentation.h"
+
+#include "vtkApertureVolumeMapper.h"
+#include "vtkMath.h"
+#include "vtkObjectFactory.h"
+#include "vtkVolumeAperturePrecompute.h"
+#include "vtkVolumeProperty.h"
+
+vtkStandardNewMacro(vtkApertureVolumeRepresentation);
+
+//------------------------------------------------------------------------------
+vtkApertureVolumeRepresentation::vtkApertureVolumeRepresentation()
+{
+  // The superclass hands its mapper to the volume at every render (UpdateMapperParameters), so
+  // replacing it here is enough.
+  this->VolumeMapper = vtkSmartPointer<vtkApertureVolumeMapper>::New();
+}
+
+//------------------------------------------------------------------------------
+vtkApertureVolumeRepresentation::~vtkApertureVolumeRepresentation() = default;
+
+//------------------------------------------------------------------------------
+vtkApertureVolumeMapper* vtkApertureVolumeRepresentation::GetApertureVolumeMapper()
+{
+  return static_cast<vtkApertureVolumeMapper*>(this->VolumeMapper.Get());
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureVolumeRepresentation::UpdateMapperParameters()
+{
+  this->Superclass::UpdateMapperParameters();
+  this->Property->ShadeOn();
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureVolumeRepresentation::SetShadingMode(int mode)
+{
+  this->GetApertureVolumeMapper()->SetShadingMode(mode);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureVolumeRepresentation::SetLightSize(double degrees)
+{
+  this->GetApertureVolumeMapper()->SetLightRadius(vtkMath::RadiansFromDegrees(degrees));
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureVolumeRepresentation::SetSkyColor(double red, double green, double blue)
+{
+  this->GetApertureVolumeMapper()->SetSkyColor(red, green, blue);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureVolumeRepresentation::SetMaximumDistance(double distance)
+{
+  this->GetApertureVolumeMapper()->GetAperturePrecompute()->SetMaximumDistance(distance);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureVolumeRepresentation::SetNumberOfDirections(int count)
+{
+  this->GetApertureVolumeMapper()->GetAperturePrecompute()->SetNumberOfDirections(count);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureVolumeRepresentation::SetApertureGridStep(int step)
+{
+  this->GetApertureVolumeMapper()->GetAperturePrecompute()->SetApertureGridStep(step);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ApertureVolumeMapper:\n";
+  this->GetApertureVolumeMapper()->PrintSelf(os, indent.GetNextIndent());
+}

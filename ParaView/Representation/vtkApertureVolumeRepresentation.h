@@ -1,0 +1,86 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    vtkApertureVolumeRepresentation.h
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+/**
+ * @class   vtkApertureVolumeRepresentation
+ * @brief   ParaView's "Aperture Volume" representation: a volume with soft area-light shadows
+ *
+ * ParaView's image volume representation drawn by vtkApertureVolumeMapper instead of its own
+ * volume mapper: every sample is shaded by its voxel's aperture against ParaView's lights (each
+ * an area light of the angular size set here) and a uniform sky of the Sky Color times the
+ * Lighting group's Ambient, as VTK's volume ambient is. The apertures are computed from the
+ * volume's transfer function when it is drawn first and again after the opacity changes (the
+ * mapper's vtkVolumeAperturePrecompute, with the distance, directions and grid step set here).
+ * Colour and opacity transfer functions, blending, cropping and the rest work as for "Volume".
+ *
+ * The apertures are the shading, so the volume is always shaded (ParaView's Shade is not read).
+ * In parallel each rank computes the apertures of its own piece: occluders on other ranks cast
+ * no shadow.
+ */
+
+#ifndef vtkApertureVolumeRepresentation_h
+#define vtkApertureVolumeRepresentation_h
+
+#include "vtkApertureLightingRepresentationModule.h" // For export macro
+#include "vtkImageVolumeRepresentation.h"
+
+class vtkApertureVolumeMapper;
+
+class VTKAPERTURELIGHTINGREPRESENTATION_EXPORT vtkApertureVolumeRepresentation
+  : public vtkImageVolumeRepresentation
+{
+public:
+  static vtkApertureVolumeRepresentation* New();
+  vtkTypeMacro(vtkApertureVolumeRepresentation, vtkImageVolumeRepresentation);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * How a light's cap meets the aperture (vtkApertureVolumeMapper::ShadingModes). Default EXACT.
+   */
+  void SetShadingMode(int mode);
+
+  /**
+   * Angular radius of every light, in degrees. Default 5.73 (0.1 radian, a soft sun).
+   */
+  void SetLightSize(double degrees);
+
+  /**
+   * Colour of the uniform sky, times the volume's ambient. Default white.
+   */
+  void SetSkyColor(double red, double green, double blue);
+
+  ///@{
+  /**
+   * The aperture computation (see vtkVolumeAperturePrecompute): how far occluders reach in world
+   * units (0, the default, a fifth of the volume's diagonal), directions over the sphere (default
+   * 64) and apertures on every n-th voxel (default 1).
+   */
+  void SetMaximumDistance(double distance);
+  void SetNumberOfDirections(int count);
+  void SetApertureGridStep(int step);
+  ///@}
+
+  /**
+   * The mapper that draws the volume.
+   */
+  vtkApertureVolumeMapper* GetApertureVolumeMapper();
+
+protected:
+  vtkApertureVolumeRepresentation();
+  ~vtkApertureVolumeRepresentation() override;
+
+  void UpdateMapperParameters() override;
+
+private:
+  vtkApertureVolumeRepresentation(const vtkApertureVolumeRepresentation&) = delete;
+  void operator=(const vtkApertureVolumeRepresentation&) = delete;
+};
+
+#endif
