@@ -13,18 +13,17 @@
 #include "ApertureRenderInput.h"
 #include "ApertureRenderMessages.h"
 #include "ApertureRenderMetaImage.h"
-#include "ApertureRenderNIfTI.h"
 #include "ApertureRenderNRRD.h"
 #include "ApertureRenderXMLBlocks.h"
 
 #include "vtkApertureDICOMReader.h"
+#include "vtkApertureNIfTIReader.h"
 #include "vtkApertureText.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkImageReader2.h"
 #include "vtkMetaImageReader.h"
-#include "vtkNIFTIImageReader.h"
 #include "vtkNew.h"
 #include "vtkNrrdReader.h"
 #include "vtkPointData.h"
@@ -62,7 +61,7 @@ vtkSmartPointer<vtkAlgorithm> VolumeReader(const std::string& name)
   vtkSmartPointer<vtkImageReader2> reader;
   if (EndsWith(lower, ".nii") || EndsWith(lower, ".nii.gz"))
   {
-    reader = vtkSmartPointer<vtkNIFTIImageReader>::New();
+    reader = vtkSmartPointer<vtkApertureNIfTIReader>::New();
   }
   else if (EndsWith(lower, ".nrrd") || EndsWith(lower, ".nhdr"))
   {
@@ -86,7 +85,8 @@ bool CheckHeader(const std::string& name, std::string& error)
   }
   if (EndsWith(lower, ".nii") || EndsWith(lower, ".nii.gz"))
   {
-    return CheckNIfTI(name, error);
+    error = vtkApertureNIfTIReader::HeaderProblem(name.c_str());
+    return error.empty();
   }
   return EndsWith(lower, ".vti") || CheckMetaImage(name, error);
 }

@@ -6,7 +6,8 @@ Checks, on real data: a convex sphere is open everywhere (ApertureRadius = pi/2)
 Aperture Precompute's AmbientOcclusion and Aperture Reference's sky irradiance (two independent
 ray casts) agree; Occlusion Query Visibility feeds Environment Visibility Lighting under an EXR
 opened with File > Open's reader lookup; a DEM (an ESRI grid written here) and the Terrain-RGB
-tile read as height fields and get apertures by horizon sweeps.
+tile read as height fields and get apertures by horizon sweeps; File > Open reads a NIfTI volume
+with the plugin's reader.
 """
 
 import math
@@ -166,6 +167,20 @@ def main(plugin, data, work):
     bad = pvs.GDALDEMReader(FileName=broken)
     bad.UpdatePipeline()
     check(bad.GetDataInformation().GetNumberOfPoints() == 0, "a broken DEM gives no data")
+
+    # NIfTI volumes, which ParaView 5.11 does not open itself: File > Open picks the plugin's
+    # reader for .nii.gz; a damaged header gives no data.
+    head = pvs.OpenDataFile(os.path.join(data, "volumes", "head-t1-mr.nii.gz"))
+    head.UpdatePipeline()
+    extent = head.GetDataInformation().GetExtent()
+    check(head.GetXMLName() == "ApertureNIfTIReader" and list(extent) == [0, 127, 0, 127, 0, 61],
+          f"File > Open reads the head MR (.nii.gz) with the NIfTI reader: extent {list(extent)}")
+    damaged = os.path.join(work, "damaged.nii")
+    with open(damaged, "wb") as f:
+        f.write(b"\x5c\x01\x00\x00" + bytes(340) + b"n+1\x00" + bytes(64))
+    bad = pvs.NIfTIReader(FileName=damaged)
+    bad.UpdatePipeline()
+    check(bad.GetDataInformation().GetNumberOfPoints() == 0, "a damaged NIfTI header gives no data")
 
     print(f"{len(FAILURES)} failure(s)")
     return 1 if FAILURES else 0

@@ -1,16 +1,17 @@
 /*=========================================================================
 
   Program:   ApertureLighting
-  Module:    ApertureRenderNIfTI.cxx
+  Module:    vtkApertureNIfTIReader.cxx
 
   Copyright (c) ApertureLighting developers
   All rights reserved.
   See LICENSE for details.
 
 =========================================================================*/
-#include "ApertureRenderNIfTI.h"
+#include "vtkApertureNIfTIReader.h"
 
 #include "vtkApertureText.h"
+#include "vtkObjectFactory.h"
 #include "vtk_zlib.h"
 
 #include <vtksys/SystemTools.hxx>
@@ -21,8 +22,8 @@
 #include <cstring>
 #include <vector>
 
-namespace ApertureRender
-{
+vtkStandardNewMacro(vtkApertureNIfTIReader);
+
 namespace
 {
 // Fixed-size fields of a header held in memory, in the file's byte order.
@@ -165,8 +166,15 @@ std::vector<unsigned char> FirstBytes(const std::string& name)
 }
 
 //------------------------------------------------------------------------------
-bool CheckNIfTI(const std::string& name, std::string& error)
+vtkApertureNIfTIReader::vtkApertureNIfTIReader() = default;
+
+//------------------------------------------------------------------------------
+vtkApertureNIfTIReader::~vtkApertureNIfTIReader() = default;
+
+//------------------------------------------------------------------------------
+std::string vtkApertureNIfTIReader::HeaderProblem(const char* fileName)
 {
+  const std::string name = fileName ? fileName : "";
   const std::vector<unsigned char> bytes = FirstBytes(name);
   std::int32_t size = 0;
   if (bytes.size() >= 4)
@@ -195,11 +203,45 @@ bool CheckNIfTI(const std::string& name, std::string& error)
     why = version == 2 ? Problem<std::int64_t, double, std::int64_t>(fields, at, fileSize)
                        : Problem<std::int16_t, float, float>(fields, at, fileSize);
   }
-  if (!why.empty())
-  {
-    error = vtkApertureText::QuoteName(name) + " is not a NIfTI file VTK can read: " + why;
-    return false;
-  }
-  return true;
+  return why.empty()
+    ? why
+    : vtkApertureText::QuoteName(name) + " is not a NIfTI file VTK can read: " + why;
 }
+
+//------------------------------------------------------------------------------
+int vtkApertureNIfTIReader::CanReadFile(const char* fileName)
+{
+  return HeaderProblem(fileName).empty() ? this->Superclass::CanReadFile(fileName) : 0;
+}
+
+//------------------------------------------------------------------------------
+int vtkApertureNIfTIReader::RequestInformation(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  const std::string problem = HeaderProblem(this->GetFileName());
+  if (!problem.empty())
+  {
+    vtkErrorMacro(<< problem << ".");
+    return 0;
+  }
+  return this->Superclass::RequestInformation(request, inputVector, outputVector);
+}
+
+//------------------------------------------------------------------------------
+int vtkApertureNIfTIReader::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // ParaView's pipeline asks for the data even after RequestInformation failed (and reported
+  // why); vtkNIFTIImageReader would then read the damaged header again.
+  if (!HeaderProblem(this->GetFileName()).empty())
+  {
+    return 0;
+  }
+  return this->Superclass::RequestData(request, inputVector, outputVector);
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureNIfTIReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
 }
