@@ -22,8 +22,12 @@ vtkStandardNewMacro(vtkApertureVolumeRepresentation);
 vtkApertureVolumeRepresentation::vtkApertureVolumeRepresentation()
 {
   // The superclass hands its mapper to the volume at every render (UpdateMapperParameters), so
-  // replacing it here is enough.
-  this->VolumeMapper = vtkSmartPointer<vtkApertureVolumeMapper>::New();
+  // replacing it here is enough. It samples as the Volume representation's mapper does for a
+  // still frame: at a distance locked to the input's spacing, not adjusted to the frame time.
+  auto mapper = vtkSmartPointer<vtkApertureVolumeMapper>::New();
+  mapper->AutoAdjustSampleDistancesOff();
+  mapper->LockSampleDistanceToInputSpacingOn();
+  this->VolumeMapper = mapper;
 }
 
 //------------------------------------------------------------------------------

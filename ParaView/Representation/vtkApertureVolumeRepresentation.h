@@ -20,6 +20,9 @@
  * mapper's vtkVolumeAperturePrecompute, with the distance, directions and grid step set here).
  * Colour and opacity transfer functions, blending, cropping and the rest work as for "Volume".
  *
+ * The volume samples as the Volume representation does for a still frame (at a distance locked to
+ * the input's spacing), also while the view is being turned.
+ *
  * The apertures are the shading, so the volume is always shaded (ParaView's Shade is not read).
  * In parallel each rank computes the apertures of its own piece: occluders on other ranks cast
  * no shadow.
