@@ -17,9 +17,8 @@ the zenith, the block's top the whole hemisphere:
 import os
 import sys
 
-import numpy as np
 import paraview.simple as pvs
-from aperture_test_data import WELL, dark_view, read_png, write_well_volume
+from aperture_test_data import WELL, baseline_error, dark_view, shot, write_well_volume
 
 FAILURES = []
 SIZE = 400
@@ -33,13 +32,6 @@ def check(ok, what):
     print(("ok   " if ok else "FAIL ") + what)
     if not ok:
         FAILURES.append(what)
-
-
-def shot(view, work, name):
-    path = os.path.join(work, name + ".png")
-    pvs.Render(view)
-    pvs.SaveScreenshot(path, view, ImageResolution=[SIZE, SIZE], TransparentBackground=0)
-    return read_png(path)
 
 
 def region(picture, x, y, half=1.5):
@@ -98,37 +90,32 @@ def main(plugin, baseline, work):
 
     display.SetRepresentationType("Volume")
     display.Shade = 1
-    plain = floor_over_top(shot(view, work, "volume-shaded"))
+    plain = floor_over_top(shot(view, work, "volume-shaded", SIZE))
     check(0.8 < plain < 1.2, f"Volume, shaded: the floor as bright as the top ({plain:.2f})")
 
     display.SetRepresentationType("Aperture Volume")
     display.ApertureVolumeLightSize = 2.0
-    hard = floor_over_top(shot(view, work, "aperture-volume"))
+    hard = floor_over_top(shot(view, work, "aperture-volume", SIZE))
     check(hard < 0.2, f"Aperture Volume: the floor in the well's shadow ({hard:.2f} < 0.2)")
 
     light.Position = [0.0, 0.0, 1.0]
-    overhead = floor_over_top(shot(view, work, "aperture-volume-overhead"))
+    overhead = floor_over_top(shot(view, work, "aperture-volume-overhead", SIZE))
     check(overhead > 0.7, f"a light at the zenith lights the floor ({overhead:.2f} > 0.7)")
     light.Position = [1.0, 0.0, 1.0]
 
     display.ApertureVolumeLightSize = 30.0
-    picture = shot(view, work, "aperture-volume-soft")
+    picture = shot(view, work, "aperture-volume-soft", SIZE)
     soft = floor_over_top(picture)
     check(hard + 0.05 < soft < 0.7, f"a 30 degree light reaches into the well ({soft:.2f}, from "
           f"{hard:.2f})")
-    if not os.path.exists(baseline):
-        os.makedirs(os.path.dirname(baseline), exist_ok=True)
-        pvs.SaveScreenshot(baseline, view, ImageResolution=[SIZE, SIZE], TransparentBackground=0)
-        print(f"wrote the baseline {baseline}: look at it")
-    else:
-        expected = read_png(baseline)
-        error = np.abs(picture - expected).mean()
-        check(expected.shape == picture.shape and error < 2.0,
-              f"the picture matches the baseline (mean |difference| {error:.3f} < 2 levels)")
+    error = baseline_error(view, picture, baseline, SIZE)
+    if error is not None:
+        check(error < 2.0, f"the picture matches the baseline (mean |difference| {error:.3f} < 2 "
+              "levels)")
 
     display.ApertureVolumeLightSize = 2.0
     opacity.Points = RING_CLEAR
-    wide = floor_over_top(shot(view, work, "aperture-volume-wide"))
+    wide = floor_over_top(shot(view, work, "aperture-volume-wide", SIZE))
     check(wide > 0.7, f"the well's wall made transparent: the light reaches the floor "
           f"({wide:.2f} > 0.7)")
 

@@ -1,6 +1,7 @@
 """Test data the plugin's tests write themselves, their views, and the pictures they read back."""
 
 import math
+import os
 
 
 def dark_view(size):
@@ -11,6 +12,31 @@ def dark_view(size):
                                 Background=[0.1, 0.1, 0.12])
     view.UseColorPaletteForBackground = 0
     return view
+
+
+def shot(view, work, name, size=400):
+    """Renders the view and returns its size x size picture, written to work/name.png."""
+    import paraview.simple as pvs
+
+    path = os.path.join(work, name + ".png")
+    pvs.Render(view)
+    pvs.SaveScreenshot(path, view, ImageResolution=[size, size], TransparentBackground=0)
+    return read_png(path)
+
+
+def baseline_error(view, picture, baseline, size=400):
+    """The picture's mean |difference| from the baseline PNG (infinite if their sizes differ);
+    None after writing the baseline from the view where there was none (look at it)."""
+    import numpy as np
+    import paraview.simple as pvs
+
+    if not os.path.exists(baseline):
+        os.makedirs(os.path.dirname(baseline), exist_ok=True)
+        pvs.SaveScreenshot(baseline, view, ImageResolution=[size, size], TransparentBackground=0)
+        print(f"wrote the baseline {baseline}: look at it")
+        return None
+    expected = read_png(baseline)
+    return np.abs(picture - expected).mean() if expected.shape == picture.shape else np.inf
 
 
 def read_png(path):
