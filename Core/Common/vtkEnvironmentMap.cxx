@@ -521,6 +521,18 @@ void vtkEnvironmentMap::Irradiance(const double normal[3], double rgb[3])
 //------------------------------------------------------------------------------
 void vtkEnvironmentMap::CapIrradiance(const double axis[3], double r, double rgb[3])
 {
+  this->CapSum(axis, r, true, rgb);
+}
+
+//------------------------------------------------------------------------------
+void vtkEnvironmentMap::CapRadiance(const double axis[3], double r, double rgb[3])
+{
+  this->CapSum(axis, r, false, rgb);
+}
+
+//------------------------------------------------------------------------------
+void vtkEnvironmentMap::CapSum(const double axis[3], double r, bool cosine, double rgb[3])
+{
   this->Update();
   rgb[0] = rgb[1] = rgb[2] = 0.0;
   if (!this->Image)
@@ -542,7 +554,7 @@ void vtkEnvironmentMap::CapIrradiance(const double axis[3], double r, double rgb
       {
         for (int k = 0; k < 3; ++k)
         {
-          rgb[k] += this->Working[3 * p + k] * this->RowSolidAngle[row] * c;
+          rgb[k] += this->Working[3 * p + k] * this->RowSolidAngle[row] * (cosine ? c : 1.0);
         }
       }
     }
@@ -552,6 +564,18 @@ void vtkEnvironmentMap::CapIrradiance(const double axis[3], double r, double rgb
 //------------------------------------------------------------------------------
 vtkImageData* vtkEnvironmentMap::NewCapTable(int columns, int rows, int radii)
 {
+  return this->NewTable(columns, rows, radii, true);
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkEnvironmentMap::NewCapRadianceTable(int columns, int rows, int radii)
+{
+  return this->NewTable(columns, rows, radii, false);
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkEnvironmentMap::NewTable(int columns, int rows, int radii, bool cosine)
+{
   this->Update();
   columns = std::max(1, columns);
   rows = std::max(1, rows);
@@ -559,7 +583,7 @@ vtkImageData* vtkEnvironmentMap::NewCapTable(int columns, int rows, int radii)
   vtkImageData* table = vtkImageData::New();
   table->SetDimensions(columns, rows, radii);
   vtkNew<vtkFloatArray> values;
-  values->SetName("CapIrradiance");
+  values->SetName(cosine ? "CapIrradiance" : "CapRadiance");
   values->SetNumberOfComponents(3);
   values->SetNumberOfTuples(static_cast<vtkIdType>(columns) * rows * radii);
   values->Fill(0.0);
@@ -570,10 +594,10 @@ vtkImageData* vtkEnvironmentMap::NewCapTable(int columns, int rows, int radii)
   }
   const int w = WorkingWidth, h = WorkingHeight;
   const double* pixels = this->PixelDirections.data();
-  const double step = 0.5 * Pi / (radii - 1);
+  const double step = (cosine ? 0.5 * Pi : Pi) / (radii - 1);
   float* out = values->GetPointer(0);
-  // For each axis, every pixel within pi/2 adds to the first radius that contains it; the sums
-  // then accumulate over the radii.
+  // For each axis, every pixel within the largest radius adds to the first radius that contains
+  // it; the sums then accumulate over the radii.
   vtkApertureSMP::For(0, static_cast<vtkIdType>(columns) * rows,
     [&](vtkIdType first, vtkIdType last)
     {
@@ -589,15 +613,16 @@ vtkImageData* vtkEnvironmentMap::NewCapTable(int columns, int rows, int radii)
           {
             const size_t p = static_cast<size_t>(row) * w + column;
             const double c = vtkMath::Dot(a, pixels + 3 * p);
-            if (c <= 0.0)
+            if (cosine && c <= 0.0)
             {
               continue;
             }
-            const int bin = std::min(
-              radii - 1, static_cast<int>(std::ceil(std::acos(std::min(1.0, c)) / step - 1e-12)));
+            const double angle = std::acos(std::min(1.0, std::max(-1.0, c)));
+            const int bin = std::min(radii - 1, static_cast<int>(std::ceil(angle / step - 1e-12)));
             for (int k = 0; k < 3; ++k)
             {
-              bins[3 * bin + k] += this->Working[3 * p + k] * this->RowSolidAngle[row] * c;
+              bins[3 * bin + k] +=
+                this->Working[3 * p + k] * this->RowSolidAngle[row] * (cosine ? c : 1.0);
             }
           }
         }

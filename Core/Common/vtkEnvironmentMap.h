@@ -22,7 +22,9 @@
  * - the irradiance on a surface of normal n (Irradiance(): the cosine lobe, by order-2
  *   spherical harmonics, Ramamoorthi and Hanrahan 2001);
  * - the radiance integrated over a cap, cosine-weighted around its axis (CapIrradiance()), and
- *   a table of it for shaders (NewCapTable()): the sky seen through an aperture.
+ *   a table of it for shaders (NewCapTable()): the sky seen through a surface's aperture;
+ * - the radiance integrated over a cap of any radius, unweighted (CapRadiance()), and its table
+ *   (NewCapRadianceTable()): the sky seen through a voxel's aperture.
  *
  * Optionally the environment is first blurred on the sphere with a Gaussian of BlurAngle (the
  * paper's filtered environments): a true angular convolution, correct at the poles and across
@@ -158,6 +160,19 @@ public:
   vtkImageData* NewCapTable(int columns, int rows, int radii);
 
   /**
+   * Radiance over the cap of angular radius r (0 to π) around a unit world axis, unweighted:
+   * ∫_cap L dω, by quadrature over the working image. The whole sphere of uniform radiance 1
+   * gives 4π.
+   */
+  void CapRadiance(const double axis[3], double r, double rgb[3]);
+
+  /**
+   * CapRadiance() tabulated for shaders as NewCapTable() tabulates CapIrradiance(), with radii
+   * from 0 to π: point (i, j, k) holds the cap of radius k π/(radii − 1) (`CapRadiance`).
+   */
+  vtkImageData* NewCapRadianceTable(int columns, int rows, int radii);
+
+  /**
    * The matrix (row-major 3 × 3) taking a world direction into the environment's own frame (x
    * north, y east, z up, unrotated), where (u, v) follow from the conventions:
    * φ = atan2(y, x), θ = asin(z).
@@ -196,6 +211,10 @@ private:
   // World <-> environment frame, with the rotation and the up axis.
   void ToWorld(const double local[3], double world[3]);
   void ToLocal(const double world[3], double local[3]);
+  // The radiance over a cap, weighted by the cosine to its axis (hemispheres only) or not; and
+  // tabulated over axes and radii up to pi/2 (weighted) or pi.
+  void CapSum(const double axis[3], double r, bool cosine, double rgb[3]);
+  vtkImageData* NewTable(int columns, int rows, int radii, bool cosine);
 
   // The working image: 256 x 128 RGB, solid angles per row, the direction of each pixel (in the
   // environment's frame), and the SH-9 irradiance coefficients.

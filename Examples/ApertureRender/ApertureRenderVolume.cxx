@@ -20,6 +20,7 @@
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkDataArray.h"
+#include "vtkEnvironmentMap.h"
 #include "vtkFlyingEdges3D.h"
 #include "vtkImageAppend.h"
 #include "vtkImageData.h"
@@ -138,9 +139,17 @@ void SetUpScene(
     std::isnan(options.CameraAzimuth) ? frontAzimuth : options.CameraAzimuth;
   const double eyeElevation = std::isnan(options.CameraElevation) ? 15.0 : options.CameraElevation;
   std::vector<Sun> suns = options.Suns;
-  if (suns.empty() && !options.NoSun)
+  if (suns.empty() && !options.NoSun && options.Environment.empty())
   {
     suns.push_back({ eyeAzimuth - 45.0, eyeElevation + 30.0, 6.0 });
+  }
+  if (suns.empty())
+  {
+    // VTK shades a volume only with a light switched on: one of intensity 0 for the sky alone.
+    vtkNew<vtkLight> dark;
+    dark->SetLightTypeToSceneLight();
+    dark->SetIntensity(0.0);
+    renderer->AddLight(dark);
   }
   for (const Sun& sun : suns)
   {
@@ -191,8 +200,31 @@ vtkSmartPointer<vtkVolumeProperty> MakeProperty(
   return property;
 }
 
-vtkSmartPointer<vtkVolumeMapper> MakeMapper(
-  const std::string& mode, const Options& options, vtkImageData* volume)
+// The environment as the volume's sky: zenith up (+z), turned by --env-azimuth, and the factor
+// on its radiance: 2^--env-exposure, or (auto) the one that makes its mean radiance 1, the
+// uniform sky's.
+vtkSmartPointer<vtkEnvironmentMap> MakeEnvironment(
+  const Options& options, vtkImageData* image, double& scale)
+{
+  auto environment = vtkSmartPointer<vtkEnvironmentMap>::New();
+  environment->SetImage(image);
+  environment->SetUpAxisToZ();
+  environment->SetAzimuth(options.EnvironmentAzimuth);
+  scale = std::exp2(options.EnvironmentExposure);
+  if (std::isnan(options.EnvironmentExposure))
+  {
+    const double up[3] = { 0.0, 0.0, 1.0 };
+    double whole[3];
+    environment->CapRadiance(up, vtkMath::Pi(), whole);
+    const double mean =
+      (0.2126 * whole[0] + 0.7152 * whole[1] + 0.0722 * whole[2]) / (4.0 * vtkMath::Pi());
+    scale = mean > 0.0 ? 1.0 / mean : 1.0;
+  }
+  return environment;
+}
+
+vtkSmartPointer<vtkVolumeMapper> MakeMapper(const std::string& mode, const Options& options,
+  vtkImageData* volume, vtkEnvironmentMap* environment, double environmentScale)
 {
   vtkSmartPointer<vtkOpenGLGPUVolumeRayCastMapper> mapper;
   if (mode == "standard")
@@ -206,7 +238,9 @@ vtkSmartPointer<vtkVolumeMapper> MakeMapper(
       mode == "smoothstep" ? vtkApertureVolumeMapper::SMOOTHSTEP : vtkApertureVolumeMapper::EXACT);
     apertures->SetLightRadius(vtkMath::RadiansFromDegrees(
       options.Suns.empty() ? 6.0 : std::max(options.Suns[0].Radius, 0.01)));
-    apertures->SetSkyColor(options.Sky[0] * 1.5, options.Sky[1] * 1.5, options.Sky[2] * 1.5);
+    const double sky = 1.5 * (environment ? environmentScale : 1.0);
+    apertures->SetSkyColor(options.Sky[0] * sky, options.Sky[1] * sky, options.Sky[2] * sky);
+    apertures->SetSkyEnvironment(environment);
     mapper = apertures;
   }
   mapper->SetInputData(volume);
@@ -275,10 +309,13 @@ int ShowVolume(const Options& options, const Input& input, MessageCapture& messa
   }
   vtkNew<vtkImageAppend> row;
   row->SetAppendAxis(0);
+  double environmentScale = 1.0;
+  vtkSmartPointer<vtkEnvironmentMap> environment =
+    input.Environment ? MakeEnvironment(options, input.Environment, environmentScale) : nullptr;
   messages.Clear();
   for (const std::string& mode : modes)
   {
-    volume->SetMapper(MakeMapper(mode, options, input.Volume));
+    volume->SetMapper(MakeMapper(mode, options, input.Volume, environment, environmentScale));
     row->AddInputData(Grab(window));
   }
   int status = 0;

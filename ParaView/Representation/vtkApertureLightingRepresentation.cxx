@@ -11,18 +11,17 @@
 #include "vtkApertureLightingRepresentation.h"
 
 #include "vtkApertureLightingInterface.h"
-#include "vtkApertureText.h"
+#include "vtkApertureSkyFile.h"
 #include "vtkCompositeApertureLightingMapper.h"
 #include "vtkEnvironmentMap.h"
-#include "vtkImageData.h"
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
-#include "vtkOpenEXRReader.h"
 
 vtkStandardNewMacro(vtkApertureLightingRepresentation);
 
 //------------------------------------------------------------------------------
 vtkApertureLightingRepresentation::vtkApertureLightingRepresentation()
+  : Sky(new vtkApertureSkyFile)
 {
   // The superclass made its mappers; ours replace them, and SetupDefaults() connects them again.
   this->Mapper->Delete();
@@ -30,7 +29,6 @@ vtkApertureLightingRepresentation::vtkApertureLightingRepresentation()
   this->Mapper = vtkCompositeApertureLightingMapper::New();
   this->LODMapper = vtkCompositeApertureLightingMapper::New();
   this->SetupDefaults();
-  this->SkyEnvironment->SetUpAxisToY();
 }
 
 //------------------------------------------------------------------------------
@@ -80,45 +78,24 @@ void vtkApertureLightingRepresentation::SetSkyIntensity(double intensity)
 //------------------------------------------------------------------------------
 void vtkApertureLightingRepresentation::SetSkyEnvironmentFile(const char* fileName)
 {
-  const std::string name = fileName ? fileName : "";
-  if (name == this->SkyEnvironmentFile)
+  if (this->Sky->SetFileName(fileName, this))
   {
-    return;
+    vtkEnvironmentMap* sky = this->Sky->GetEnvironment();
+    this->SetOnBoth([sky](vtkApertureLightingInterface* l) { l->SetSkyEnvironment(sky); });
   }
-  this->SkyEnvironmentFile = name;
-  this->SkyEnvironmentLoaded = false;
-  if (!name.empty())
-  {
-    vtkNew<vtkOpenEXRReader> reader;
-    reader->SetFileName(name.c_str());
-    reader->Update();
-    vtkImageData* image = reader->GetOutput();
-    this->SkyEnvironmentLoaded = reader->GetErrorCode() == 0 && image->GetNumberOfPoints() > 0;
-    if (this->SkyEnvironmentLoaded)
-    {
-      this->SkyEnvironment->SetImage(image);
-    }
-    else
-    {
-      vtkErrorMacro("Cannot read the sky environment " << vtkApertureText::QuoteName(name)
-                                                       << "; the sky stays uniform.");
-    }
-  }
-  vtkEnvironmentMap* sky = this->SkyEnvironmentLoaded ? this->SkyEnvironment.Get() : nullptr;
-  this->SetOnBoth([sky](vtkApertureLightingInterface* l) { l->SetSkyEnvironment(sky); });
 }
 
 //------------------------------------------------------------------------------
 void vtkApertureLightingRepresentation::SetSkyEnvironmentUpAxis(int axis)
 {
-  this->SkyEnvironment->SetUpAxis(axis);
+  this->Sky->GetMap()->SetUpAxis(axis);
   this->Modified();
 }
 
 //------------------------------------------------------------------------------
 void vtkApertureLightingRepresentation::SetSkyEnvironmentAzimuth(double degrees)
 {
-  this->SkyEnvironment->SetAzimuth(degrees);
+  this->Sky->GetMap()->SetAzimuth(degrees);
   this->Modified();
 }
 
@@ -126,10 +103,7 @@ void vtkApertureLightingRepresentation::SetSkyEnvironmentAzimuth(double degrees)
 void vtkApertureLightingRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "SkyEnvironmentFile: \"" << this->SkyEnvironmentFile << "\""
-     << (this->SkyEnvironmentLoaded ? "" : " (not in use)") << "\n";
-  os << indent << "SkyEnvironment:\n";
-  this->SkyEnvironment->PrintSelf(os, indent.GetNextIndent());
+  this->Sky->PrintSelf(os, indent);
   os << indent << "ApertureLighting:\n";
   this->GetApertureLighting(0)->PrintSelf(os, indent.GetNextIndent());
 }

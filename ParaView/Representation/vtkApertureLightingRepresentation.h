@@ -27,12 +27,11 @@
 
 #include "vtkApertureLightingRepresentationModule.h" // For export macro
 #include "vtkGeometryRepresentationWithFaces.h"
-#include "vtkNew.h" // For vtkNew
 
-#include <string> // For std::string
+#include <memory> // For std::unique_ptr
 
 class vtkApertureLightingInterface;
-class vtkEnvironmentMap;
+class vtkApertureSkyFile;
 
 class VTKAPERTURELIGHTINGREPRESENTATION_EXPORT vtkApertureLightingRepresentation
   : public vtkGeometryRepresentationWithFaces
@@ -92,9 +91,7 @@ private:
   template <typename Setter>
   void SetOnBoth(Setter set);
 
-  std::string SkyEnvironmentFile;
-  vtkNew<vtkEnvironmentMap> SkyEnvironment;
-  bool SkyEnvironmentLoaded = false;
+  std::unique_ptr<vtkApertureSkyFile> Sky;
 
   vtkApertureLightingRepresentation(const vtkApertureLightingRepresentation&) = delete;
   void operator=(const vtkApertureLightingRepresentation&) = delete;

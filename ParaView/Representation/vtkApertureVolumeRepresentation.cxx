@@ -10,6 +10,7 @@
 =========================================================================*/
 #include "vtkApertureVolumeRepresentation.h"
 
+#include "vtkApertureSkyFile.h"
 #include "vtkApertureVolumeMapper.h"
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
@@ -20,6 +21,7 @@ vtkStandardNewMacro(vtkApertureVolumeRepresentation);
 
 //------------------------------------------------------------------------------
 vtkApertureVolumeRepresentation::vtkApertureVolumeRepresentation()
+  : Sky(new vtkApertureSkyFile)
 {
   // The superclass hands its mapper to the volume at every render (UpdateMapperParameters), so
   // replacing it here is enough. It samples as the Volume representation's mapper does for a
@@ -68,6 +70,30 @@ void vtkApertureVolumeRepresentation::SetSkyColor(double red, double green, doub
 }
 
 //------------------------------------------------------------------------------
+void vtkApertureVolumeRepresentation::SetSkyEnvironmentFile(const char* fileName)
+{
+  if (this->Sky->SetFileName(fileName, this))
+  {
+    this->GetApertureVolumeMapper()->SetSkyEnvironment(this->Sky->GetEnvironment());
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureVolumeRepresentation::SetSkyEnvironmentUpAxis(int axis)
+{
+  this->Sky->GetMap()->SetUpAxis(axis);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureVolumeRepresentation::SetSkyEnvironmentAzimuth(double degrees)
+{
+  this->Sky->GetMap()->SetAzimuth(degrees);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
 void vtkApertureVolumeRepresentation::SetMaximumDistance(double distance)
 {
   this->GetApertureVolumeMapper()->GetAperturePrecompute()->SetMaximumDistance(distance);
@@ -92,6 +118,7 @@ void vtkApertureVolumeRepresentation::SetApertureGridStep(int step)
 void vtkApertureVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  this->Sky->PrintSelf(os, indent);
   os << indent << "ApertureVolumeMapper:\n";
   this->GetApertureVolumeMapper()->PrintSelf(os, indent.GetNextIndent());
 }

@@ -14,8 +14,8 @@
  *
  * ParaView's image volume representation drawn by vtkApertureVolumeMapper instead of its own
  * volume mapper: every sample is shaded by its voxel's aperture against ParaView's lights (each
- * an area light of the angular size set here) and a uniform sky of the Sky Color times the
- * Lighting group's Ambient, as VTK's volume ambient is. The apertures are computed from the
+ * an area light of the angular size set here) and a sky of the Sky Color times the Lighting
+ * group's Ambient, as VTK's volume ambient is: uniform, or an HDR environment from a file. The apertures are computed from the
  * volume's transfer function when it is drawn first and again after the opacity changes (the
  * mapper's vtkVolumeAperturePrecompute, with the distance, directions and grid step set here).
  * Colour and opacity transfer functions, blending, cropping and the rest work as for "Volume".
@@ -34,6 +34,9 @@
 #include "vtkApertureLightingRepresentationModule.h" // For export macro
 #include "vtkImageVolumeRepresentation.h"
 
+#include <memory> // For std::unique_ptr
+
+class vtkApertureSkyFile;
 class vtkApertureVolumeMapper;
 
 class VTKAPERTURELIGHTINGREPRESENTATION_EXPORT vtkApertureVolumeRepresentation
@@ -59,6 +62,23 @@ public:
    */
   void SetSkyColor(double red, double green, double blue);
 
+  /**
+   * An HDR environment (a latitude-longitude OpenEXR file) as the sky, scaled by the sky's
+   * colour; empty (the default) for the uniform sky. A file that cannot be read is reported and
+   * leaves the uniform sky.
+   */
+  void SetSkyEnvironmentFile(const char* fileName);
+
+  /**
+   * The environment's up axis: 0, 1 or 2 for X, Y (the default, ParaView's view up) or Z.
+   */
+  void SetSkyEnvironmentUpAxis(int axis);
+
+  /**
+   * The environment's turn about the up axis, in degrees. Default 0.
+   */
+  void SetSkyEnvironmentAzimuth(double degrees);
+
   ///@{
   /**
    * The aperture computation (see vtkVolumeAperturePrecompute): how far occluders reach in world
@@ -82,6 +102,8 @@ protected:
   void UpdateMapperParameters() override;
 
 private:
+  std::unique_ptr<vtkApertureSkyFile> Sky;
+
   vtkApertureVolumeRepresentation(const vtkApertureVolumeRepresentation&) = delete;
   void operator=(const vtkApertureVolumeRepresentation&) = delete;
 };

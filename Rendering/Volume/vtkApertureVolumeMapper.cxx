@@ -12,6 +12,8 @@
 
 #include "vtkApertureVolumeFS.h"
 #include "vtkDataArray.h"
+#include "vtkEnvironmentMap.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
@@ -37,6 +39,7 @@
 
 vtkStandardNewMacro(vtkApertureVolumeMapper);
 vtkCxxSetObjectMacro(vtkApertureVolumeMapper, ApertureData, vtkImageData);
+vtkCxxSetObjectMacro(vtkApertureVolumeMapper, SkyEnvironment, vtkEnvironmentMap);
 
 namespace
 {
@@ -46,6 +49,8 @@ const char* const LightingTag = "//VTK::ComputeLighting::Dec";
 // Custom uniforms are declared by type; the aperture texture's int becomes a sampler.
 const char* const SamplerAsInt = "uniform int apertureVolume;";
 const char* const SamplerDeclaration = "uniform sampler3D apertureVolume;";
+const char* const SkySamplerAsInt = "uniform int apertureSkyTable;";
+const char* const SkySamplerDeclaration = "uniform sampler3D apertureSkyTable;";
 
 unsigned char ToByte(double unit)
 {
@@ -96,6 +101,7 @@ vtkApertureVolumeMapper::vtkApertureVolumeMapper() = default;
 vtkApertureVolumeMapper::~vtkApertureVolumeMapper()
 {
   this->SetApertureData(nullptr);
+  this->SetSkyEnvironment(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -249,7 +255,7 @@ vtkOpenGLShaderProperty* vtkApertureVolumeMapper::ShaderPropertyFor(vtkVolume* v
        << "\n#define APERTURE_SHADING "
        << (this->ShadingMode == SMOOTHSTEP ? "sphericalCapSmoothstep" : "sphericalCapExact") << "\n"
        << (vol->GetProperty()->HasGradientOpacity() ? "#define APERTURE_GRADIENT_OPACITY\n" : "")
-       << vtkApertureVolumeFS;
+       << (this->SkyEnvironment ? "#define APERTURE_SKY_ENVIRONMENT\n" : "") << vtkApertureVolumeFS;
   auto* user = vtkOpenGLShaderProperty::SafeDownCast(vol->GetShaderProperty());
   if (!this->Shaders)
   {
@@ -263,6 +269,8 @@ vtkOpenGLShaderProperty* vtkApertureVolumeMapper::ShaderPropertyFor(vtkVolume* v
     this->CopiedTime = user->GetShaderMTime();
     this->Shaders->AddFragmentShaderReplacement(LightingTag, true, this->InstalledCode, false);
     this->Shaders->AddFragmentShaderReplacement(SamplerAsInt, false, SamplerDeclaration, false);
+    this->Shaders->AddFragmentShaderReplacement(
+      SkySamplerAsInt, false, SkySamplerDeclaration, false);
   }
   return this->Shaders;
 }
@@ -328,6 +336,70 @@ void vtkApertureVolumeMapper::SetLightUniforms(vtkRenderer* ren, vtkVolume* vol)
     static_cast<float>(this->SkyColor[1] * property->GetAmbient(0)),
     static_cast<float>(this->SkyColor[2] * property->GetAmbient(0)) };
   uniforms->SetUniform3f("apertureSkyColor", sky);
+  if (this->SkyEnvironment)
+  {
+    float matrix[9];
+    this->SkyMatrix(vol, matrix);
+    uniforms->SetUniformi("apertureSkyTable", this->SkyTable->GetTextureUnit());
+    uniforms->SetUniformMatrix3x3("apertureSkyMatrix", matrix);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureVolumeMapper::SkyMatrix(vtkVolume* vol, float matrix[9])
+{
+  // Data axes to world (the volume's matrix; the shader makes the axis unit again), then world
+  // to the environment's frame.
+  double toEnvironment[9];
+  this->SkyEnvironment->GetWorldToEnvironment(toEnvironment);
+  vtkMatrix4x4* toWorld = vol->GetMatrix();
+  for (int row = 0; row < 3; ++row)
+  {
+    for (int column = 0; column < 3; ++column)
+    {
+      double sum = 0.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        sum += toEnvironment[3 * row + k] * toWorld->GetElement(k, column);
+      }
+      matrix[3 * column + row] = static_cast<float>(sum);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkApertureVolumeMapper::UploadSkyTable(vtkRenderer* ren)
+{
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  const vtkMTimeType time = this->SkyEnvironment->GetImageMTime();
+  if (!this->SkyTable)
+  {
+    this->SkyTable = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  if (this->SkyTableTime == time && this->SkyTable->GetContext() == window &&
+    this->SkyTable->GetHandle())
+  {
+    return true;
+  }
+  vtkSmartPointer<vtkImageData> table;
+  table.TakeReference(this->SkyEnvironment->NewCapRadianceTable(64, 32, 32));
+  int dims[3];
+  table->GetDimensions(dims);
+  this->SkyTable->SetContext(window);
+  // Around the seam in azimuth, clamped at the poles and at the radii's ends.
+  this->SkyTable->SetWrapS(vtkTextureObject::Repeat);
+  this->SkyTable->SetWrapT(vtkTextureObject::ClampToEdge);
+  this->SkyTable->SetWrapR(vtkTextureObject::ClampToEdge);
+  this->SkyTable->SetMinificationFilter(vtkTextureObject::Linear);
+  this->SkyTable->SetMagnificationFilter(vtkTextureObject::Linear);
+  if (!this->SkyTable->Create3DFromRaw(dims[0], dims[1], dims[2], 3, VTK_FLOAT,
+        vtkFloatArray::SafeDownCast(table->GetPointData()->GetScalars())->GetPointer(0)))
+  {
+    this->WarnOnce("the sky environment's 3D texture could not be created");
+    return false;
+  }
+  this->SkyTableTime = time;
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -339,7 +411,8 @@ void vtkApertureVolumeMapper::GPURender(vtkRenderer* ren, vtkVolume* vol)
     this->WarnOnce(problem);
   }
   vtkImageData* apertures = problem.empty() ? this->CurrentApertures(vol) : nullptr;
-  if (!apertures || !this->UploadApertures(ren, apertures))
+  if (!apertures || !this->UploadApertures(ren, apertures) ||
+    (this->SkyEnvironment && !this->UploadSkyTable(ren)))
   {
     this->Superclass::GPURender(ren, vol);
     return;
@@ -349,8 +422,16 @@ void vtkApertureVolumeMapper::GPURender(vtkRenderer* ren, vtkVolume* vol)
   vtkSmartPointer<vtkShaderProperty> user = vol->GetShaderProperty();
   vol->SetShaderProperty(this->ShaderPropertyFor(vol));
   this->Texture->Activate();
+  if (this->SkyEnvironment)
+  {
+    this->SkyTable->Activate();
+  }
   this->SetLightUniforms(ren, vol);
   this->Superclass::GPURender(ren, vol);
+  if (this->SkyEnvironment)
+  {
+    this->SkyTable->Deactivate();
+  }
   this->Texture->Deactivate();
   vol->SetShaderProperty(user);
 }
@@ -361,6 +442,10 @@ void vtkApertureVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
   if (this->Texture)
   {
     this->Texture->ReleaseGraphicsResources(window);
+  }
+  if (this->SkyTable)
+  {
+    this->SkyTable->ReleaseGraphicsResources(window);
   }
   this->UploadedApertures = nullptr;
   this->Superclass::ReleaseGraphicsResources(window);
@@ -375,6 +460,7 @@ void vtkApertureVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LightRadius: " << this->LightRadius << "\n";
   os << indent << "SkyColor: (" << this->SkyColor[0] << ", " << this->SkyColor[1] << ", "
      << this->SkyColor[2] << ")\n";
+  os << indent << "SkyEnvironment: " << this->SkyEnvironment << "\n";
   os << indent << "ApertureData: " << this->ApertureData << "\n";
   os << indent << "AperturePrecompute: " << this->Precompute.Get() << "\n";
 }

@@ -23,7 +23,9 @@
  * space. A medium has no surface to turn toward a light, so there is no Lambert or specular term;
  * vtkVolumeApertureReference's Monte-Carlo irradiance is what this estimates. Every switched-on
  * light of the renderer (up to 8) is an area light of angular radius LightRadius toward it (a
- * positional light from its direction to the volume's centre); the sky is uniform, of SkyColor.
+ * positional light from its direction to the volume's centre); the sky is uniform, of SkyColor,
+ * or an HDR environment (SetSkyEnvironment()), where A/4π becomes the environment's radiance
+ * over the aperture over 4π.
  *
  * Everything else is VTK's: transfer functions, composite blending, cropping, clipping planes,
  * masks, the interactive sample-distance reduction, the volume's transform. Apertures come from
@@ -53,6 +55,7 @@
 
 #include <string> // For the warning key
 
+class vtkEnvironmentMap;
 class vtkImageData;
 class vtkOpenGLShaderProperty;
 class vtkTextureObject;
@@ -99,6 +102,16 @@ public:
   vtkGetVector3Macro(SkyColor, double);
   ///@}
 
+  /**
+   * An HDR environment as the sky instead of the uniform one: each sample gets the environment's
+   * radiance over its aperture (vtkEnvironmentMap::CapRadiance(), tabulated once per image on 64
+   * × 32 axes × 32 radii up to π, turned by the volume's and the environment's rotations at no
+   * cost) over 4π, times SkyColor and the volume property's ambient. A uniform environment of
+   * radiance 1 gives the uniform sky. nullptr (the default): the uniform sky.
+   */
+  void SetSkyEnvironment(vtkEnvironmentMap* environment);
+  vtkGetObjectMacro(SkyEnvironment, vtkEnvironmentMap);
+
   ///@{
   /**
    * Apertures computed elsewhere, on this mapper's input (its grid or a coarser one over the same
@@ -127,6 +140,7 @@ protected:
   double LightRadius = 0.1;
   double SkyColor[3] = { 1.0, 1.0, 1.0 };
   vtkImageData* ApertureData = nullptr;
+  vtkEnvironmentMap* SkyEnvironment = nullptr;
 
 private:
   vtkApertureVolumeMapper(const vtkApertureVolumeMapper&) = delete;
@@ -138,6 +152,10 @@ private:
   // The apertures to draw with, computed when needed; nullptr with a warning when unusable.
   vtkImageData* CurrentApertures(vtkVolume* vol);
   bool UploadApertures(vtkRenderer* ren, vtkImageData* apertures);
+  // The environment's cap-radiance table as a 3D texture, made again when its image changes.
+  bool UploadSkyTable(vtkRenderer* ren);
+  // The matrix (column-major, for GL) from the volume's data axes to the environment's frame.
+  void SkyMatrix(vtkVolume* vol, float matrix[9]);
   // The shader property the volume draws with: its own code and replacements and this mapper's.
   vtkOpenGLShaderProperty* ShaderPropertyFor(vtkVolume* vol);
   void SetLightUniforms(vtkRenderer* ren, vtkVolume* vol);
@@ -145,6 +163,8 @@ private:
 
   vtkSmartPointer<vtkVolumeAperturePrecompute> Precompute;
   vtkSmartPointer<vtkTextureObject> Texture;
+  vtkSmartPointer<vtkTextureObject> SkyTable;
+  vtkMTimeType SkyTableTime = 0;
   vtkImageData* UploadedApertures = nullptr; // identity only, never dereferenced
   vtkMTimeType UploadedTime = 0;
   vtkMTimeType PrecomputeTried = 0;

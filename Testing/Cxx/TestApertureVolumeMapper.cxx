@@ -14,16 +14,21 @@
 //     and two lights, apertures from nearly closed to the whole sphere);
 //  2. with its own precompute: an open shell's inner wall is lit through the opening and not
 //     from behind, a transfer-function change recomputes the apertures, Shade off draws as VTK;
-//  3. what it cannot shade (two components, apertures that do not fit) warns and draws as VTK.
+//  3. what it cannot shade (two components, apertures that do not fit) warns and draws as VTK;
+//  4. an HDR sky: pixels against vtkEnvironmentMap::CapRadiance() for turned volumes and
+//     environments (the table, its look-up and the matrices), and a uniform environment of
+//     radiance 1 draws what the uniform sky draws.
 
 #include "vtkApertureVolumeMapper.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
+#include "vtkEnvironmentMap.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
+#include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkOpenGLGPUVolumeRayCastMapper.h"
 #include "vtkPiecewiseFunction.h"
@@ -134,6 +139,46 @@ bool Report(bool ok, const char* what, double value, double limit)
   return ok;
 }
 
+// Constant apertures of one bent normal and radius over the volume.
+vtkSmartPointer<vtkImageData> ConstantApertures(
+  vtkImageData* volume, const double bent[3], double radius)
+{
+  auto apertures = vtkSmartPointer<vtkImageData>::New();
+  apertures->CopyStructure(volume);
+  vtkNew<vtkFloatArray> bentArray;
+  bentArray->SetName("BentNormal");
+  bentArray->SetNumberOfComponents(3);
+  bentArray->SetNumberOfTuples(volume->GetNumberOfPoints());
+  vtkNew<vtkFloatArray> radiusArray;
+  radiusArray->SetName("ApertureRadius");
+  radiusArray->SetNumberOfTuples(volume->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < volume->GetNumberOfPoints(); ++i)
+  {
+    bentArray->SetTuple(i, bent);
+    radiusArray->SetValue(i, static_cast<float>(radius));
+  }
+  apertures->GetPointData()->AddArray(bentArray);
+  apertures->GetPointData()->AddArray(radiusArray);
+  return apertures;
+}
+
+// A random unit bent normal and radius (0.05 pi to pi), and the normal as the texture holds it
+// (bytes of (n + 1)/2), made unit; the radius is a byte of r/pi already.
+void RandomAperture(double bent[3], double quantized[3], double& radius)
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    bent[a] = vtkMath::Gaussian();
+  }
+  vtkMath::Normalize(bent);
+  radius = std::round(vtkMath::Random(0.05, 1.0) * 255.0) / 255.0 * Pi;
+  for (int a = 0; a < 3; ++a)
+  {
+    quantized[a] = std::round(0.5 * (bent[a] + 1.0) * 255.0) / 255.0 * 2.0 - 1.0;
+  }
+  vtkMath::Normalize(quantized);
+}
+
 // 1. Pixels against the C++ formula, apertures constant over the volume.
 bool TestTwin()
 {
@@ -149,36 +194,11 @@ bool TestTwin()
   {
     for (int c = 0; c < 12; ++c)
     {
-      double bent[3] = { vtkMath::Gaussian(), vtkMath::Gaussian(), vtkMath::Gaussian() };
-      vtkMath::Normalize(bent);
-      // The radius as the texture holds it: a byte of r/pi.
-      const double radius = std::round(vtkMath::Random(0.05, 1.0) * 255.0) / 255.0 * Pi;
-      double quantized[3];
-      for (int a = 0; a < 3; ++a)
-      {
-        quantized[a] = std::round(0.5 * (bent[a] + 1.0) * 255.0) / 255.0 * 2.0 - 1.0;
-      }
-      vtkMath::Normalize(quantized);
-      auto apertures = vtkSmartPointer<vtkImageData>::New();
-      apertures->CopyStructure(volume);
-      vtkNew<vtkFloatArray> bentArray;
-      bentArray->SetName("BentNormal");
-      bentArray->SetNumberOfComponents(3);
-      bentArray->SetNumberOfTuples(volume->GetNumberOfPoints());
-      vtkNew<vtkFloatArray> radiusArray;
-      radiusArray->SetName("ApertureRadius");
-      radiusArray->SetNumberOfTuples(volume->GetNumberOfPoints());
-      for (vtkIdType i = 0; i < volume->GetNumberOfPoints(); ++i)
-      {
-        bentArray->SetTuple(i, bent);
-        radiusArray->SetValue(i, static_cast<float>(radius));
-      }
-      apertures->GetPointData()->AddArray(bentArray);
-      apertures->GetPointData()->AddArray(radiusArray);
-
+      double bent[3], quantized[3], radius;
+      RandomAperture(bent, quantized, radius);
       vtkNew<vtkApertureVolumeMapper> mapper;
       mapper->SetInputData(volume);
-      mapper->SetApertureData(apertures);
+      mapper->SetApertureData(ConstantApertures(volume, bent, radius));
       mapper->SetShadingMode(mode);
       const double lightRadius = c % 3 == 0 ? 0.05 : 0.4;
       mapper->SetLightRadius(lightRadius);
@@ -203,6 +223,90 @@ bool TestTwin()
   }
   ok &= Report(worst <= 3.0 / 255.0, "twin: largest |pixel - vtkSphericalCap| over 24 cases", worst,
     3.0 / 255.0);
+  return ok;
+}
+
+// A latitude-longitude environment whose radiance rises smoothly toward its up and east (grey,
+// 0.4 to 2.6): every axis sees another amount of it.
+vtkSmartPointer<vtkImageData> GradientEnvironment()
+{
+  const int width = 128, height = 64;
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(VTK_FLOAT, 3);
+  auto* rgb = vtkFloatArray::SafeDownCast(image->GetPointData()->GetScalars());
+  for (int j = 0; j < height; ++j)
+  {
+    const double elevation = Pi * ((j + 0.5) / height - 0.5);
+    for (int i = 0; i < width; ++i)
+    {
+      const double azimuth = 2.0 * Pi * ((i + 0.5) / width - 0.5);
+      const double value =
+        1.5 + 0.8 * std::sin(elevation) + 0.3 * std::cos(elevation) * std::sin(azimuth);
+      for (int c = 0; c < 3; ++c)
+      {
+        rgb->SetTypedComponent(i + width * j, c, static_cast<float>(value));
+      }
+    }
+  }
+  return image;
+}
+
+// 4. The HDR sky: a light of intensity 0 (VTK shades only with a light on), the sky alone.
+bool TestEnvironmentSky()
+{
+  auto volume = MakeVolume(8, 1, [](double, double, double) { return 1.0; });
+  auto property = WhiteProperty(1e-4);
+  vtkNew<vtkEnvironmentMap> environment;
+  environment->SetImage(GradientEnvironment());
+  vtkNew<vtkApertureVolumeMapper> first;
+  Scene scene(first, property);
+  const double dark[3] = { 0.0, 0.0, 1.0 };
+  scene.AddLight(dark, 0.0);
+  scene.Volume->SetOrigin(0.5, 0.5, 0.5); // turned about the cube's centre
+  vtkMath::RandomSeed(5);
+  double worst = 0.0;
+  for (int c = 0; c < 12; ++c)
+  {
+    // Turned environments (Y or Z up, an azimuth) and volumes: a transposed matrix shows.
+    environment->SetUpAxis(c % 2 ? vtkEnvironmentMap::Y : vtkEnvironmentMap::Z);
+    environment->SetAzimuth(30.0 * c);
+    scene.Volume->SetOrientation(0.0, 0.0, c % 3 ? 25.0 * c : 0.0);
+    double bent[3], quantized[3], radius;
+    RandomAperture(bent, quantized, radius);
+    vtkNew<vtkApertureVolumeMapper> mapper;
+    mapper->SetInputData(volume);
+    mapper->SetApertureData(ConstantApertures(volume, bent, radius));
+    mapper->SetSkyEnvironment(environment);
+    scene.Volume->SetMapper(mapper);
+    double axis[4] = { quantized[0], quantized[1], quantized[2], 0.0 }, world[4];
+    scene.Volume->GetMatrix()->MultiplyPoint(axis, world);
+    vtkMath::Normalize(world);
+    double radiance[3];
+    environment->CapRadiance(world, radius, radiance);
+    const double expected = 0.3 * radiance[0] / (4.0 * Pi);
+    worst = std::max(worst, std::abs(scene.Pixel() - std::min(1.0, expected)));
+  }
+  bool ok = Report(worst <= 3.0 / 255.0,
+    "HDR sky: largest |pixel - CapRadiance/4pi| over 12 turned cases", worst, 3.0 / 255.0);
+
+  // A uniform environment of radiance 1 against the uniform sky.
+  scene.Volume->SetOrientation(0.0, 0.0, 0.0);
+  auto uniform = GradientEnvironment();
+  uniform->GetPointData()->GetScalars()->Fill(1.0);
+  environment->SetImage(uniform);
+  double bent[3], quantized[3], radius;
+  RandomAperture(bent, quantized, radius);
+  vtkNew<vtkApertureVolumeMapper> withEnvironment;
+  withEnvironment->SetInputData(volume);
+  withEnvironment->SetApertureData(ConstantApertures(volume, bent, radius));
+  withEnvironment->SetSkyEnvironment(environment);
+  scene.Volume->SetMapper(withEnvironment);
+  const double lit = scene.Pixel();
+  withEnvironment->SetSkyEnvironment(nullptr);
+  const double difference = std::abs(scene.Pixel() - lit);
+  ok &= Report(difference <= 2.0 / 255.0 && lit > 0.05,
+    "a uniform environment of 1: |pixel - uniform sky's|", difference, 2.0 / 255.0);
   return ok;
 }
 
@@ -338,5 +442,6 @@ int TestApertureVolumeMapper(int, char*[])
   bool ok = TestTwin();
   ok &= TestShell();
   ok &= TestUnusable();
+  ok &= TestEnvironmentSky();
   return ok ? 0 : 1;
 }

@@ -153,7 +153,7 @@ int TestEnvironmentMap(int argc, char* argv[])
   }
   vtkNew<vtkMinimalStandardRandomSequence> random;
   random->SetSeed(3);
-  double worstIrradiance = 0.0, worstCap = 0.0;
+  double worstIrradiance = 0.0, worstCap = 0.0, worstRadiance = 0.0;
   for (int t = 0; t < 20; ++t)
   {
     double n[3] = { random->GetNextValue() - 0.5, random->GetNextValue() - 0.5,
@@ -166,11 +166,17 @@ int TestEnvironmentMap(int argc, char* argv[])
     map->CapIrradiance(n, r, cap);
     const double exact = Pi * std::sin(r) * std::sin(r);
     worstCap = std::max(worstCap, std::abs(cap[0] - exact) / exact);
+    // Unweighted, any radius up to pi: the cap's solid angle 2 pi (1 - cos R).
+    const double big = 0.1 + (Pi - 0.1) * random->GetNextValue();
+    map->CapRadiance(n, big, cap);
+    const double area = 2.0 * Pi * (1.0 - std::cos(big));
+    worstRadiance = std::max(worstRadiance, std::abs(cap[0] - area) / area);
   }
   std::cout << "uniform: worst cell " << worstCell << ", irradiance " << worstIrradiance
-            << " of pi, cap " << worstCap << " of pi sin^2 r\n";
-  Check(worstCell < 1e-6 && worstIrradiance < 1e-4 && worstCap < 0.03,
-    "a uniform environment: cells 1, irradiance pi, caps pi sin^2 r");
+            << " of pi, cap " << worstCap << " of pi sin^2 r, cap radiance " << worstRadiance
+            << " of 2 pi (1 - cos r)\n";
+  Check(worstCell < 1e-6 && worstIrradiance < 1e-4 && worstCap < 0.03 && worstRadiance < 0.03,
+    "a uniform environment: cells 1, irradiance pi, caps pi sin^2 r and 2 pi (1 - cos r)");
 
   // Harmonics against direct integration: exact for a sky that brightens linearly toward the
   // zenith (order 1), and what order 2 makes of the forest map, whose sun it cannot resolve.
@@ -252,27 +258,33 @@ int TestEnvironmentMap(int argc, char* argv[])
   Check(worstTurn < 0.05, "turning the environment with the directions changes nothing");
   map->SetAzimuth(0.0);
 
-  // The cap table holds CapIrradiance().
-  vtkSmartPointer<vtkImageData> table;
-  table.TakeReference(map->NewCapTable(16, 8, 5));
-  double worstTable = 0.0;
-  for (int k = 1; k < 5; ++k)
+  // The cap tables hold CapIrradiance() (radii to pi/2) and CapRadiance() (radii to pi).
+  for (bool cosine : { true, false })
   {
-    for (int j = 0; j < 8; j += 3)
+    vtkSmartPointer<vtkImageData> table;
+    table.TakeReference(cosine ? map->NewCapTable(16, 8, 5) : map->NewCapRadianceTable(16, 8, 5));
+    double worstTable = 0.0;
+    for (int k = 1; k < 5; ++k)
     {
-      for (int i = 0; i < 16; i += 5)
+      for (int j = 0; j < 8; j += 3)
       {
-        double axis[3], direct[3];
-        map->DirectionOf((i + 0.5) / 16, (j + 0.5) / 8, axis);
-        map->CapIrradiance(axis, k * 0.5 * Pi / 4, direct);
-        const double stored =
-          table->GetPointData()->GetScalars()->GetComponent((k * 8 + j) * 16 + i, 2);
-        worstTable = std::max(worstTable, std::abs(stored - direct[2]) / (direct[2] + 1e-9));
+        for (int i = 0; i < 16; i += 5)
+        {
+          double axis[3], direct[3];
+          map->DirectionOf((i + 0.5) / 16, (j + 0.5) / 8, axis);
+          const double r = k * (cosine ? 0.5 * Pi : Pi) / 4;
+          cosine ? map->CapIrradiance(axis, r, direct) : map->CapRadiance(axis, r, direct);
+          const double stored =
+            table->GetPointData()->GetScalars()->GetComponent((k * 8 + j) * 16 + i, 2);
+          worstTable = std::max(worstTable, std::abs(stored - direct[2]) / (direct[2] + 1e-9));
+        }
       }
     }
+    std::cout << (cosine ? "cap table against CapIrradiance" : "cap table against CapRadiance")
+              << ": worst relative difference " << worstTable << "\n";
+    Check(worstTable < 1e-3,
+      cosine ? "the cap table holds CapIrradiance()" : "the radiance table holds CapRadiance()");
   }
-  std::cout << "cap table against CapIrradiance: worst relative difference " << worstTable << "\n";
-  Check(worstTable < 1e-3, "the cap table holds CapIrradiance()");
 
   // The blur on the sphere: a spot near the north pole and one across the seam keep their energy
   // and centre, and spread evenly.

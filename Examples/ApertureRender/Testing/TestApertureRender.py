@@ -744,6 +744,26 @@ if os.path.exists(path("volume,-every-mode.png")):
     panels = read_png(path("volume,-every-mode.png"))[:, :, :3].astype(float)
     standard, exact = panels[:, :200], panels[:, 200:400]
     check(np.abs(standard - exact).mean() > 2.0, "volume: aperture shading is not VTK's")
+# An HDR sky on a volume: the environment alone (no default sun) draws another picture than the
+# uniform sky alone, and turning it changes the picture. (Sky-lit volumes are dim and even, so
+# these are not held to looks_rendered.)
+sunrise = os.path.join(DATA, "env", "sunrise.exr")
+skies = {}
+for name, extra in (("uniform", ["--sun", "none"]), ("hdr", ["--env", sunrise]),
+                    ("turned", ["--env", sunrise, "--env-azimuth", "120"])):
+    picture = path(f"volume-sky-{name}.png")
+    result = run(mr, "--size", "200x150", *extra, "-o", picture)
+    drawn = result.returncode == 0 and result.stderr == "" and os.path.exists(picture)
+    check(drawn, f"volume, {name} sky: exit 0, a picture, nothing on stderr"
+          + ("" if drawn else f" (exit {result.returncode}: {result.stderr!r})"))
+    if drawn:
+        skies[name] = read_png(picture)[:, :, :3].astype(float)
+if len(skies) == 3:
+    check(np.abs(skies["hdr"] - skies["uniform"]).mean() > 1.0 and
+          np.abs(skies["turned"] - skies["hdr"]).mean() > 0.2,
+          f"volume: the HDR sky differs from the uniform one "
+          f"({np.abs(skies['hdr'] - skies['uniform']).mean():.2f} levels) and turns "
+          f"({np.abs(skies['turned'] - skies['hdr']).mean():.2f})")
 # DICOM: the MR written as a CT series of one file a slice by vtk-dicom, read from its folder.
 from vtkdicom import vtkDICOMCTGenerator, vtkDICOMWriter  # noqa: E402 (python3-vtk-dicom)
 series = path("dicom-series")

@@ -17,7 +17,30 @@
 // lights (apertureLightCount): toward each in the volume's data axes (apertureLightAxis), its cap
 // (apertureLightCap: radius, and the sine and cosine of half of it) and its colour times
 // intensity times the property's diffuse (apertureLightColor); the sky's colour times the
-// property's ambient (apertureSkyColor).
+// property's ambient (apertureSkyColor). With APERTURE_SKY_ENVIRONMENT defined, an environment's
+// radiance over caps (apertureSkyTable, vtkEnvironmentMap::NewCapRadianceTable(): axes u, v in
+// the environment's frame, radii 0 to pi) and the matrix from the data axes to that frame
+// (apertureSkyMatrix).
+
+#ifdef APERTURE_SKY_ENVIRONMENT
+// The environment's radiance over the aperture, over the whole sphere's 4 pi: the uniform sky's
+// A / 4 pi for an environment of radiance 1.
+vec3 apertureSkyShare(sphericalCapCap aperture)
+{
+  vec3 d = normalize(apertureSkyMatrix * aperture.axis);
+  float u = sphericalCapAtan2(d.y, d.x) / (2.0 * sphericalCapPi) + 0.5;
+  float v = sphericalCapAtan2(d.z, length(d.xy)) / sphericalCapPi + 0.5;
+  float radii = float(textureSize(apertureSkyTable, 0).z);
+  float r = clamp(aperture.radius / sphericalCapPi, 0.0, 1.0);
+  vec3 radiance = texture(apertureSkyTable, vec3(u, v, (r * (radii - 1.0) + 0.5) / radii)).rgb;
+  return radiance / (4.0 * sphericalCapPi);
+}
+#else
+vec3 apertureSkyShare(sphericalCapCap aperture)
+{
+  return vec3(aperture.halfSin * aperture.halfSin);
+}
+#endif
 
 // The share of a light's cap that falls within the aperture. Most samples see a light whole or
 // not at all: those are told from the half chord between the axes, without an angle.
@@ -64,7 +87,7 @@ vec4 computeLighting(vec4 color, int component, float label)
   float length = length(bent);
   sphericalCapCap aperture = sphericalCapMakeCap(
     length > 1e-3 ? bent / length : vec3(0.0, 0.0, 1.0), stored.w * sphericalCapPi);
-  vec3 light = apertureSkyColor * (aperture.halfSin * aperture.halfSin);
+  vec3 light = apertureSkyColor * apertureSkyShare(aperture);
   for (int i = 0; i < apertureLightCount; ++i)
   {
     vec3 cap = apertureLightCap[i];
