@@ -186,6 +186,18 @@ public:
 
   ///@{
   /**
+   * Add the normals the apertures were computed against as `Normals` when the input has none.
+   * Default on. Off saves 12 bytes a point where only the apertures are wanted (aperture-precompute
+   * writes no normals): the horizon sweeps then compute each texel's normal again on every pass
+   * instead of keeping it, which takes about 1.6 times as long, for the same apertures.
+   */
+  vtkSetMacro(ComputeNormals, bool);
+  vtkGetMacro(ComputeNormals, bool);
+  vtkBooleanMacro(ComputeNormals, bool);
+  ///@}
+
+  ///@{
+  /**
    * Also keep the horizon of every sector (height fields swept for horizons only; with rays the
    * filter warns and writes none). Default off. `HorizonAngles` (float, NumberOfSectors
    * components) holds per texel h_k, radians above the horizontal plane in [−π/2, π/2]: the
@@ -510,6 +522,7 @@ protected:
   int Sampling = STRATIFIED;
   double HeightScale = 1.0;
   bool ComputeAmbientOcclusion = false;
+  bool ComputeNormals = true;
   bool ComputeHorizonAngles = false;
   bool ComputeSkyViewFactor = false;
   bool ComputeSkyViewFactorCosine = false;

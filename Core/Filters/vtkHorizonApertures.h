@@ -131,8 +131,10 @@ public:
     float* BentNormals;      ///< unit; the normal where not valid
     float* ApertureRadius;   ///< radians; 0 where not valid
     float* AmbientOcclusion; ///< 1 on an open plane; 0 where not valid; may be null
-    float* Normals;          ///< (0, 0, 1) where not valid
-    unsigned char* Valid;    ///< 0 for no-data texels
+    /// (0, 0, 1) where not valid; may be null: each pass then computes the normals it needs
+    /// from the heights again (12 bytes a texel less, about 1.6 times the time; the same bits)
+    float* Normals;
+    unsigned char* Valid; ///< 0 for no-data texels
     /// The horizon h of each sector (sector k at k + Sectors × texel), radians; π/2 (closed)
     /// where not valid; may be null.
     float* Horizons = nullptr;

@@ -364,18 +364,19 @@ struct Results
   vtkSmartPointer<vtkFloatArray> Products[4]; // sky-view factors, openness
   vtkNew<vtkUnsignedCharArray> Mask;
 
-  bool Allocate(const vtkHorizonHeightField::Settings& settings, vtkIdType texels)
+  // Normals only when they are to be added: the sweeps can do without.
+  bool Allocate(const vtkHorizonHeightField::Settings& settings, bool normals, vtkIdType texels)
   {
     this->Bent = NewArray(settings.BentNormalName, 3, texels, "1");
     this->Radius = NewArray(settings.RadiusName, 1, texels, "radian");
-    this->Normals = NewArray("Normals", 3, texels, "1");
-    bool allocated = this->Bent && this->Radius && this->Normals;
+    bool allocated = this->Bent && this->Radius;
     auto optional = [&](bool wanted, const char* name, int components, const char* unit)
     {
       auto array = wanted ? NewArray(name, components, texels, unit) : nullptr;
       allocated = allocated && (!wanted || array);
       return array;
     };
+    this->Normals = optional(normals, "Normals", 3, "1");
     this->Occlusion = optional(settings.AmbientOcclusion, settings.OcclusionName, 1, "1");
     this->Horizons = optional(settings.Horizons, settings.HorizonName, settings.Sectors, "radian");
     this->Products[0] = optional(settings.SkyViewFactor, "SkyViewFactor", 1, "1");
@@ -414,7 +415,6 @@ struct Results
   {
     const vtkIdType texels = this->Radius->GetNumberOfTuples();
     ToWorld(image, this->Bent->GetPointer(0), texels);
-    ToWorld(image, this->Normals->GetPointer(0), texels);
     output->AddArray(this->Bent);
     output->AddArray(this->Radius);
     if (this->Occlusion)
@@ -432,9 +432,10 @@ struct Results
         output->AddArray(product);
       }
     }
-    if (!output->GetNormals())
+    if (this->Normals)
     {
-      output->SetNormals(this->Normals); // the normals used, unless the input brings its own
+      ToWorld(image, this->Normals->GetPointer(0), texels);
+      output->SetNormals(this->Normals);
     }
     const unsigned char* mask = this->Mask->GetPointer(0);
     const vtkIdType noData = texels - std::count(mask, mask + texels, 1);
@@ -463,8 +464,8 @@ vtkIdType vtkHorizonHeightField::Compute(vtkImageData* image, vtkDataArray* heig
   {
     return -1;
   }
-  Results results;
-  if (!results.Allocate(settings, nx * ny))
+  Results results; // the normals used, unless the input brings its own
+  if (!results.Allocate(settings, settings.Normals && !output->GetNormals(), nx * ny))
   {
     error = "There is not enough memory for the apertures of " + std::to_string(nx * ny) +
       " texels; set a MaximumDistance and stream in tiles.";

@@ -45,6 +45,7 @@ public:
     int Sectors = 32;
     double MaximumDistance = VTK_DOUBLE_MAX;
     bool AmbientOcclusion = false;
+    bool Normals = true; ///< "Normals", unless the output has normals
     bool Horizons = false;
     bool SkyViewFactor = false;       ///< "SkyViewFactor"
     bool SkyViewFactorCosine = false; ///< "SkyViewFactorCosine"
@@ -76,7 +77,7 @@ public:
    * them to `output` (the point data of a grid of that extent): the bent normals, radii, ambient
    * occlusion, horizons (in the grid's frame, Sectors components named by their middle azimuths)
    * and terrain products if asked, each with its unit (vtkDataArray::UNITS_LABEL()), "Normals"
-   * (those of the triangulated surface, which the sweeps use) unless `output` has normals, and,
+   * (those of the triangulated surface, which the sweeps use) if asked and `output` has none, and,
    * where there is no-data, the valid mask. `progress` as for vtkHorizonApertures::Compute().
    * Returns the number of no-data texels in the extent, or -1 with one sentence in `error`.
    */

@@ -83,6 +83,7 @@ void Configure(vtkAperturePrecompute* filter, const Options& o, double convergen
   filter->SetMethodToHorizons();
   filter->SetNumberOfSectors(o.Sectors);
   filter->SetComputeAmbientOcclusion(o.What.Apertures);
+  filter->ComputeNormalsOff(); // not written: 1.2 GB less on a 10,000² DEM
   filter->SetComputeHorizonAngles(o.What.Horizons);
   filter->SetComputeSkyViewFactor(o.What.SkyViewFactor);
   filter->SetComputeSkyViewFactorCosine(o.What.SkyViewFactorCosine);

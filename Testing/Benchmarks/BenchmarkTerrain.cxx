@@ -18,7 +18,10 @@
 //  3. a 10,000 x 10,000 DEM from a GeoTIFF on disk to a GeoTIFF of apertures, tiled with a search
 //     radius: wall time and peak resident memory;
 //  4. scaling: time per texel-sector over grid sizes and sector counts;
-//  5. the peak memory of the tiled GeoTIFF path over DEM sizes.
+//  5. the peak memory of the tiled GeoTIFF path over DEM sizes;
+//  6. keeping the horizons against apertures only;
+//  7. normals kept (the filter's default) against computed again on each pass (ComputeNormals
+//     off, as aperture-precompute runs): time and peak memory.
 //
 // Usage: BenchmarkTerrain <Testing/Data folder> <scratch folder> [--quick | --section N]
 // --quick shrinks every size (a smoke test that the benchmark still works); --section N runs
@@ -328,6 +331,43 @@ void KeptHorizons(const std::string& data, bool quick)
     side, side, rounds, a, b, b / a);
 }
 
+// Section 7.
+void RecomputedNormals(const std::string& data, bool quick)
+{
+  const int side = quick ? 256 : 4096, rounds = quick ? 2 : 3;
+  auto fuji = Fuji(data, side);
+  std::vector<double> seconds[2]; // [kept]
+  long peak[2] = { 0, 0 };
+  for (int round = 0; round < rounds; ++round) // alternating, as in section 6
+  {
+    for (const bool keep : { true, false })
+    {
+      ResetPeak();
+      const auto start = std::chrono::steady_clock::now();
+      {
+        vtkNew<vtkAperturePrecompute> filter;
+        filter->SetInputData(fuji);
+        filter->SetMethodToHorizons();
+        filter->ComputeAmbientOcclusionOn();
+        filter->SetComputeNormals(keep);
+        filter->Update();
+      }
+      seconds[keep].push_back(Since(start));
+      peak[keep] = std::max(peak[keep], StatusKiB("VmHWM:") / 1024);
+    }
+  }
+  for (auto& s : seconds)
+  {
+    std::sort(s.begin(), s.end());
+  }
+  const double kept = seconds[1][rounds / 2], again = seconds[0][rounds / 2];
+  std::printf("\n### 7. Normals kept or computed again (%d x %d, 32 sectors, no radius, AO, "
+              "median of %d alternating runs)\n\n| normals | time (s) | peak (MiB) |\n"
+              "|---|---|---|\n| kept (default) | %.2f | %ld |\n| computed again (ComputeNormals "
+              "off) | %.2f | %ld |\n| ratio | %.2f | %.2f |\n",
+    side, side, rounds, kept, peak[1], again, peak[0], again / kept, double(peak[0]) / peak[1]);
+}
+
 int main(int argc, char* argv[])
 {
   if (argc < 3)
@@ -362,6 +402,10 @@ int main(int argc, char* argv[])
   if (only == 0 || only == 6)
   {
     KeptHorizons(data, quick);
+  }
+  if (only == 0 || only == 7)
+  {
+    RecomputedNormals(data, quick);
   }
   return 0;
 }

@@ -36,6 +36,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <string>
 #include <vector>
 
 namespace
@@ -360,6 +361,70 @@ void TestHeightTypes(const char* file)
   Check(floats->GetValue(n / 2) == static_cast<float>(std::round(source->GetComponent(n / 2, 0))),
     "the input heights are left as they were");
 }
+// ComputeNormals off: no Normals array, the same apertures to the bit, by horizons on the grid
+// and by rays on its triangulation; the normals the sweeps use (computed again on every pass when
+// not kept) are those of the triangles the rays see on the grid.
+void TestWithoutNormals(const char* file)
+{
+  auto image = Fuji(file, 8);
+  auto mesh = Triangulate(image);
+  vtkSmartPointer<vtkDataArray> swept;
+  for (vtkDataObject* input :
+    { static_cast<vtkDataObject*>(image), static_cast<vtkDataObject*>(mesh) })
+  {
+    auto run = [&](bool normals)
+    {
+      vtkNew<vtkAperturePrecompute> filter;
+      filter->SetInputData(input);
+      filter->SetNumberOfRays(32);
+      filter->ComputeAmbientOcclusionOn();
+      filter->SetComputeNormals(normals);
+      filter->Update();
+      return vtkSmartPointer<vtkDataSet>(vtkDataSet::SafeDownCast(filter->GetOutputDataObject(0)));
+    };
+    const auto kept = run(true), left = run(false);
+    int different = 0;
+    for (const char* name : { "BentNormal", "ApertureRadius", "AmbientOcclusion" })
+    {
+      vtkDataArray* a = kept->GetPointData()->GetArray(name);
+      vtkDataArray* b = left->GetPointData()->GetArray(name);
+      different += !a || !b;
+      for (vtkIdType t = 0; a && b && t < a->GetNumberOfTuples(); ++t)
+      {
+        for (int c = 0; c < a->GetNumberOfComponents(); ++c)
+        {
+          different += a->GetComponent(t, c) != b->GetComponent(t, c);
+        }
+      }
+    }
+    const char* what = input == image ? "horizons" : "rays";
+    std::cout << "ComputeNormals off (" << what << "): " << different << " values differ\n";
+    Check(different == 0, std::string(what) + ": the same apertures without normals", different, 0);
+    Check(kept->GetPointData()->GetNormals() && !left->GetPointData()->GetNormals(),
+      std::string(what) + ": Normals added only when asked");
+    if (input == image)
+    {
+      swept = kept->GetPointData()->GetNormals();
+    }
+  }
+  vtkNew<vtkAperturePrecompute> rays;
+  rays->SetInputData(image);
+  rays->SetMethodToRays();
+  rays->SetNumberOfRays(4);
+  rays->Update();
+  vtkDataArray* traced = rays->GetImageDataOutput()->GetPointData()->GetNormals();
+  double worst = 0.0;
+  for (vtkIdType t = 0; swept && traced && t < swept->GetNumberOfTuples(); ++t)
+  {
+    double a[3], b[3], c[3];
+    swept->GetTuple(t, a);
+    traced->GetTuple(t, b);
+    vtkMath::Cross(a, b, c);
+    worst = std::max(worst, std::atan2(vtkMath::Norm(c), vtkMath::Dot(a, b)));
+  }
+  std::cout << "the sweeps' normals against the rays': " << worst << " rad (max)\n";
+  Check(worst < 1e-6, "the sweeps' normals are the rays' triangles' normals", worst, 1e-6);
+}
 }
 
 int TestAperturePrecomputeHeightField(int argc, char* argv[])
@@ -370,6 +435,7 @@ int TestAperturePrecomputeHeightField(int argc, char* argv[])
   TestHorizonsMatchRays(file);
   TestKeptHorizons(file);
   TestHeightTypes(file);
+  TestWithoutNormals(file);
   delete[] file;
   return vtkApertureTest::Result();
 }
