@@ -19,6 +19,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <initializer_list>
 #include <limits>
 #include <memory>
@@ -106,66 +108,31 @@ bool CheckGrid(const vtkHorizonApertures::Grid& grid, Field& field, std::string&
   return true;
 }
 
-// The normalised sum of the unit normals of the six triangles around texel t, whose neighbours
-// are all valid: the cross products of the ring's offsets (see TexelNormal) written out, each
-// with z = dx dy. The sweeps ask for every texel's normal each pass: this is their common case.
-void InteriorNormal(const Field& f, vtkIdType t, double n[3])
-{
-  const double dx = f.Spacing[0], dy = f.Spacing[1], z = f.Heights[t];
-  const float* h = f.Heights;
-  const vtkIdType row = f.Nx;
-  const double z0 = h[t + 1] - z, z1 = h[t + 1 + row] - z, z2 = h[t + row] - z, z3 = h[t - 1] - z,
-               z4 = h[t - 1 - row] - z, z5 = h[t - row] - z;
-  const double x[6] = { -dy * z0, dy * (z2 - z1), dy * z3, dy * z3, dy * (z4 - z5), -dy * z0 };
-  const double y[6] = { dx * (z0 - z1), -dx * z2, -dx * z2, dx * (z4 - z3), dx * z5, dx * z5 };
-  const double area = dx * dy;
-  n[0] = n[1] = n[2] = 0.0;
-  for (int k = 0; k < 6; ++k)
-  {
-    const double inverse = 1.0 / std::sqrt(x[k] * x[k] + y[k] * y[k] + area * area);
-    n[0] += x[k] * inverse;
-    n[1] += y[k] * inverse;
-    n[2] += area * inverse;
-  }
-  vtkMath::Normalize(n);
-}
-
 // The normal at texel (i, j) of the triangulated surface that vtkAperturePrecompute's rays see
 // (cells split as (i,j)(i+1,j)(i+1,j+1) and (i,j)(i+1,j+1)(i,j+1)): the normalised sum of the
 // unit normals of its up to six triangles whose corners are all valid; +z without any.
 void TexelNormal(const Field& f, vtkIdType i, vtkIdType j, double n[3])
 {
-  // Its neighbours around it, counter-clockwise seen from above; triangles are (k, k + 1 mod 6).
-  static const int ring[6][2] = { { 1, 0 }, { 1, 1 }, { 0, 1 }, { -1, 0 }, { -1, -1 }, { 0, -1 } };
+  // Its neighbours around it, counter-clockwise seen from above; triangles are (k, k + 1).
+  static const int ring[7][2] = { { 1, 0 }, { 1, 1 }, { 0, 1 }, { -1, 0 }, { -1, -1 }, { 0, -1 },
+    { 1, 0 } };
   const vtkIdType t = i + j * f.Nx;
-  bool there[6];
-  bool all = true;
-  for (int k = 0; k < 6; ++k)
+  double offsets[7][3];
+  bool there[7];
+  for (int k = 0; k < 7; ++k)
   {
-    const vtkIdType a = i + ring[k][0], b = j + ring[k][1];
-    there[k] = a >= 0 && a < f.Nx && b >= 0 && b < f.Ny && f.IsValid(a + b * f.Nx);
-    all = all && there[k];
-  }
-  if (all)
-  {
-    InteriorNormal(f, t, n);
-    return;
-  }
-  double offsets[6][3];
-  for (int k = 0; k < 6; ++k)
-  {
+    const vtkIdType a = i + ring[k][0], b = j + ring[k][1], u = a + b * f.Nx;
+    there[k] = a >= 0 && a < f.Nx && b >= 0 && b < f.Ny && f.IsValid(u);
     offsets[k][0] = ring[k][0] * f.Spacing[0];
     offsets[k][1] = ring[k][1] * f.Spacing[1];
-    offsets[k][2] =
-      there[k] ? double(f.Heights[t + ring[k][0] + ring[k][1] * f.Nx]) - f.Heights[t] : 0.0;
+    offsets[k][2] = there[k] ? double(f.Heights[u]) - f.Heights[t] : 0.0;
   }
   n[0] = n[1] = n[2] = 0.0;
   for (int k = 0; k < 6; ++k)
   {
-    const int next = k == 5 ? 0 : k + 1;
     double m[3];
-    vtkMath::Cross(offsets[k], offsets[next], m);
-    if (there[k] && there[next] && vtkMath::Normalize(m) > 0.0)
+    vtkMath::Cross(offsets[k], offsets[k + 1], m);
+    if (there[k] && there[k + 1] && vtkMath::Normalize(m) > 0.0)
     {
       vtkMath::Add(n, m, n);
     }
@@ -177,9 +144,59 @@ void TexelNormal(const Field& f, vtkIdType i, vtkIdType j, double n[3])
   }
 }
 
-// Normals and valid flags of the output extent; (0, 0, 1) for no-data texels. Without `normals`,
-// the valid flags only.
-void ComputeNormals(const Field& f, float* normals, unsigned char* valid)
+// Each output texel's normal where the sweeps read it: three floats, or without them one 32-bit
+// word in a float's place (the AO array, which only Finish() writes, or a scratch array): the
+// hemispherical octahedral coordinates of the normal (its z is never negative), 16 bits each,
+// within 5e-5 rad: 4 bytes a texel instead of 12, for a few nanoseconds to decode.
+class NormalStore
+{
+public:
+  NormalStore(float* full, float* packed)
+    : Full(full)
+    , Packed(packed)
+  {
+  }
+
+  void Set(vtkIdType o, const double n[3]) const
+  {
+    if (this->Full)
+    {
+      std::copy(n, n + 3, &this->Full[3 * o]);
+      return;
+    }
+    const double l1 = std::abs(n[0]) + std::abs(n[1]) + std::max(n[2], 0.0);
+    auto code = [l1](double c) // 32767 ± 32767: 0 and ±1 exactly
+    { return static_cast<std::uint32_t>(std::lround(c / l1 * 32767.0) + 32767); };
+    const std::uint32_t word = code(n[0]) | code(n[1]) << 16;
+    std::memcpy(&this->Packed[o], &word, sizeof(word));
+  }
+
+  void Get(vtkIdType o, float n[3]) const
+  {
+    if (this->Full)
+    {
+      std::copy(&this->Full[3 * o], &this->Full[3 * o] + 3, n);
+      return;
+    }
+    std::uint32_t word;
+    std::memcpy(&word, &this->Packed[o], sizeof(word));
+    const float step = 1.0f / 32767.0f;
+    const float u = (float(word & 0xffffu) - 32767.0f) * step;
+    const float v = (float(word >> 16) - 32767.0f) * step;
+    const float z = std::max(1.0f - std::abs(u) - std::abs(v), 0.0f);
+    const float inverse = 1.0f / std::sqrt(u * u + v * v + z * z);
+    n[0] = u * inverse;
+    n[1] = v * inverse;
+    n[2] = z * inverse;
+  }
+
+private:
+  float* Full;
+  float* Packed;
+};
+
+// Normals and valid flags of the output extent; (0, 0, 1) for no-data texels.
+void ComputeNormals(const Field& f, const NormalStore& normals, unsigned char* valid)
 {
   vtkApertureSMP::For(0, f.OutNy,
     [&](vtkIdType first, vtkIdType last)
@@ -192,35 +209,14 @@ void ComputeNormals(const Field& f, float* normals, unsigned char* valid)
           const vtkIdType t = i + j * f.Nx, o = f.OutputIndex(i, j);
           valid[o] = f.Receives(t) ? 1 : 0;
           double n[3] = { 0.0, 0.0, 1.0 };
-          if (valid[o] && normals)
+          if (valid[o])
           {
             TexelNormal(f, i, j, n);
           }
-          if (normals)
-          {
-            std::copy(n, n + 3, &normals[3 * o]);
-          }
+          normals.Set(o, n);
         }
       }
     });
-}
-
-// The normal of output texel o, (i, j), as ComputeNormals() gives it: from `normals`, or where
-// the caller keeps none computed again from the heights (12 bytes a texel less, some time a pass).
-void NormalAt(
-  const Field& f, const float* normals, vtkIdType o, vtkIdType i, vtkIdType j, float n[3])
-{
-  if (normals)
-  {
-    std::copy(&normals[3 * o], &normals[3 * o] + 3, n);
-    return;
-  }
-  double exact[3] = { 0.0, 0.0, 1.0 };
-  if (f.Receives(i + j * f.Nx))
-  {
-    TexelNormal(f, i, j, exact);
-  }
-  std::copy(exact, exact + 3, n); // in float as the buffer holds them: the same bits either way
 }
 
 // atan(x) within 5e-10, about three times as fast as the C library's (which took 12% of a sweep):
@@ -606,7 +602,8 @@ void LineSweep::Undo(vtkIdType k)
 class Group
 {
 public:
-  Group(const Field& f, const Lines& lines, const float* normals, vtkIdType first, vtkIdType last);
+  Group(const Field& f, const Lines& lines, const NormalStore& normals, vtkIdType first,
+    vtkIdType last);
 
   vtkIdType GetLength() const { return this->Length; }
   vtkIdType GetNumberOfLines() const { return this->Last - this->First; }
@@ -614,7 +611,7 @@ public:
   // Fills the scratch with the heights of the group's samples and receivers.
   void Gather(Scratch& s) const;
 
-  // Calls sink(output index, i, j, steepest slopes in world units: one per sector, then one per
+  // Calls sink(output index, steepest slopes in world units: one per sector, then one per
   // sector of the negated samples, NoSample where not swept) for every receiver.
   template <typename Sink>
   void Scatter(const Scratch& s, const Sink& sink) const;
@@ -625,12 +622,12 @@ private:
 
   const Field& F;
   const Lines& L;
-  const float* Normals;
+  const NormalStore& Normals;
   vtkIdType First, Last, Low = 0, High = -1, Length = 0;
 };
 
 Group::Group(
-  const Field& f, const Lines& lines, const float* normals, vtkIdType first, vtkIdType last)
+  const Field& f, const Lines& lines, const NormalStore& normals, vtkIdType first, vtkIdType last)
   : F(f)
   , L(lines)
   , Normals(normals)
@@ -694,7 +691,7 @@ void Group::Gather(Scratch& s) const
       if (o >= 0 && std::isnan(s.Occluder[at])) // the texel's tangent plane at the sample
       {
         float normal[3];
-        NormalAt(this->F, this->Normals, o, i, j, normal);
+        this->Normals.Get(o, normal);
         const double rise = -normal[1 - l.Major] / normal[2] * this->F.Spacing[1 - l.Major];
         s.Receiver[at] = this->F.Heights[t] + offset * rise;
       }
@@ -723,7 +720,7 @@ void Group::Scatter(const Scratch& s, const Sink& sink) const
         {
           slopes[k] = s.Slope[k].empty() ? NoSample : s.Slope[k][at] * perStep;
         }
-        sink(this->F.OutputIndex(i, j), i, j, slopes);
+        sink(this->F.OutputIndex(i, j), slopes);
       }
     }
   }
@@ -759,7 +756,7 @@ void SweepGroup(
 // heights.
 template <typename Sink>
 void SweepSector(
-  const Field& f, const Lines& lines, const float* normals, bool lower, const Sink& sink)
+  const Field& f, const Lines& lines, const NormalStore& normals, bool lower, const Sink& sink)
 {
   const vtkIdType groups = (lines.LastLine - lines.FirstLine + LinesPerGroup) / LinesPerGroup;
   vtkSMPThreadLocal<Scratch> scratch;
@@ -866,9 +863,9 @@ bool WantsProducts(const vtkHorizonApertures::Buffers& out)
 class Accumulator
 {
 public:
-  Accumulator(const Field& f, const Lines& lines, const vtkHorizonApertures::Buffers& out,
-    float* planes[2], unsigned short* sampled)
-    : F(f)
+  Accumulator(const Lines& lines, const vtkHorizonApertures::Buffers& out,
+    const NormalStore& normals, float* planes[2], unsigned short* sampled)
+    : Normals(normals)
     , L(lines)
     , Out(out)
     , Planes{ planes[0], planes[1] }
@@ -876,10 +873,10 @@ public:
   {
   }
 
-  void operator()(vtkIdType o, vtkIdType i, vtkIdType j, const double slopes[4]) const
+  void operator()(vtkIdType o, const double slopes[4]) const
   {
     float n[3];
-    NormalAt(this->F, this->Out.Normals, o, i, j, n);
+    this->Normals.Get(o, n);
     this->AddApertures(o, n, slopes);
     if (this->Sampled)
     {
@@ -950,7 +947,7 @@ private:
     }
   }
 
-  const Field& F;
+  const NormalStore& Normals;
   const Lines& L;
   const vtkHorizonApertures::Buffers& Out;
   float* const Planes[2];
@@ -987,17 +984,17 @@ void FinishProducts(
 
 // The open hemisphere less the deficits: radius, bent normal, ambient occlusion; no-data texels
 // closed. Then the products, with `sampled` sectors per texel (null without products).
-void Finish(const Field& f, const vtkHorizonApertures::Buffers& out, int sectors,
-  const unsigned short* sampled)
+// The normal is read before AO is written: AO's array may hold the packed normals.
+void Finish(const vtkHorizonApertures::Buffers& out, const NormalStore& normals, vtkIdType texels,
+  int sectors, const unsigned short* sampled)
 {
-  const vtkIdType texels = f.OutNx * f.OutNy;
   vtkApertureSMP::For(0, texels,
     [&](vtkIdType first, vtkIdType last)
     {
       for (vtkIdType o = first; o < last; ++o)
       {
         float n[3];
-        NormalAt(f, out.Normals, o, f.Extent[0] + o % f.OutNx, f.Extent[2] + o / f.OutNx, n);
+        normals.Get(o, n);
         if (sampled)
         {
           FinishProducts(out, o, n, sampled[o]);
@@ -1059,21 +1056,27 @@ bool vtkHorizonApertures::Compute(const Grid& grid, const Buffers& output, std::
     return false;
   }
   const vtkIdType texels = f.OutNx * f.OutNy;
-  ComputeNormals(f, output.Normals, output.Valid);
-  std::fill_n(output.BentNormals, 3 * texels, 0.0f);
-  std::fill_n(output.ApertureRadius, texels, 0.0f);
   const bool products = WantsProducts(output);
   std::vector<unsigned short> sampled;
+  std::vector<float> packed; // the normals' home when the caller keeps neither them nor AO
   try
   {
     sampled.resize(products ? texels : 0, 0);
+    packed.resize(output.Normals || output.AmbientOcclusion ? 0 : texels);
   }
   catch (const std::bad_alloc&)
   {
-    error = "There is not enough memory to count the sectors of " + std::to_string(texels) +
+    error = "There is not enough memory for the sweeps' own arrays over " + std::to_string(texels) +
       " texels; stream in tiles.";
     return false;
   }
+  const NormalStore normals(output.Normals,
+    output.Normals              ? nullptr
+      : output.AmbientOcclusion ? output.AmbientOcclusion
+                                : packed.data());
+  ComputeNormals(f, normals, output.Valid);
+  std::fill_n(output.BentNormals, 3 * texels, 0.0f);
+  std::fill_n(output.ApertureRadius, texels, 0.0f);
   for (float* sum : { output.SkyViewFactor, output.SkyViewFactorCosine, output.PositiveOpenness,
          output.NegativeOpenness })
   {
@@ -1092,8 +1095,8 @@ bool vtkHorizonApertures::Compute(const Grid& grid, const Buffers& output, std::
   {
     buffered.emplace_back(f, grid, pass, paired);
     float* toPlanes[2] = { planes.Plane(pass, 0), planes.Plane(pass, 1) };
-    SweepSector(f, buffered.back(), output.Normals, output.NegativeOpenness != nullptr,
-      Accumulator(f, buffered.back(), output, toPlanes, products ? sampled.data() : nullptr));
+    SweepSector(f, buffered.back(), normals, output.NegativeOpenness != nullptr,
+      Accumulator(buffered.back(), output, normals, toPlanes, products ? sampled.data() : nullptr));
     if (buffered.size() == HorizonPlanes::PassesPerFlush || pass + 1 == passes)
     {
       planes.Flush(buffered.data(), static_cast<int>(buffered.size()));
@@ -1105,7 +1108,7 @@ bool vtkHorizonApertures::Compute(const Grid& grid, const Buffers& output, std::
       return false;
     }
   }
-  Finish(f, output, grid.Sectors, products ? sampled.data() : nullptr);
+  Finish(output, normals, texels, grid.Sectors, products ? sampled.data() : nullptr);
   return true;
 }
 
@@ -1150,12 +1153,12 @@ bool vtkHorizonApertures::ComputeHorizons(
   }
   std::vector<float> normals(3 * f.OutNx * f.OutNy);
   std::vector<unsigned char> valid(f.OutNx * f.OutNy);
-  ComputeNormals(f, normals.data(), valid.data());
+  const NormalStore store(normals.data(), nullptr);
+  ComputeNormals(f, store, valid.data());
   horizons.assign(f.OutNx * f.OutNy, std::numeric_limits<float>::quiet_NaN());
   float* h = horizons.data();
-  SweepSector(f, Lines(f, grid, sector, false), normals.data(), false,
-    [h](vtkIdType o, vtkIdType, vtkIdType, const double slopes[4])
-    { h[o] = static_cast<float>(std::atan(slopes[0])); });
+  SweepSector(f, Lines(f, grid, sector, false), store, false,
+    [h](vtkIdType o, const double slopes[4]) { h[o] = static_cast<float>(std::atan(slopes[0])); });
   return true;
 }
 

@@ -361,9 +361,9 @@ void TestHeightTypes(const char* file)
   Check(floats->GetValue(n / 2) == static_cast<float>(std::round(source->GetComponent(n / 2, 0))),
     "the input heights are left as they were");
 }
-// ComputeNormals off: no Normals array, the same apertures to the bit, by horizons on the grid
-// and by rays on its triangulation; the normals the sweeps use (computed again on every pass when
-// not kept) are those of the triangles the rays see on the grid.
+// ComputeNormals off: no Normals array; the same apertures to the bit by rays on the grid's
+// triangulation, within 1e-4 by horizons on the grid (whose sweeps keep the normals packed); the
+// normals the sweeps compute are those of the triangles the rays see on the grid.
 void TestWithoutNormals(const char* file)
 {
   auto image = Fuji(file, 8);
@@ -383,6 +383,7 @@ void TestWithoutNormals(const char* file)
       return vtkSmartPointer<vtkDataSet>(vtkDataSet::SafeDownCast(filter->GetOutputDataObject(0)));
     };
     const auto kept = run(true), left = run(false);
+    const double tolerance = input == image ? 1e-4 : 0.0;
     int different = 0;
     for (const char* name : { "BentNormal", "ApertureRadius", "AmbientOcclusion" })
     {
@@ -393,12 +394,13 @@ void TestWithoutNormals(const char* file)
       {
         for (int c = 0; c < a->GetNumberOfComponents(); ++c)
         {
-          different += a->GetComponent(t, c) != b->GetComponent(t, c);
+          different += !(std::abs(a->GetComponent(t, c) - b->GetComponent(t, c)) <= tolerance);
         }
       }
     }
     const char* what = input == image ? "horizons" : "rays";
-    std::cout << "ComputeNormals off (" << what << "): " << different << " values differ\n";
+    std::cout << "ComputeNormals off (" << what << "): " << different << " values differ by more "
+              << "than " << tolerance << "\n";
     Check(different == 0, std::string(what) + ": the same apertures without normals", different, 0);
     Check(kept->GetPointData()->GetNormals() && !left->GetPointData()->GetNormals(),
       std::string(what) + ": Normals added only when asked");
