@@ -12,6 +12,7 @@
 
 #include "vtkApertureLightCapGLSL.h"
 #include "vtkApertureLightingFS.h"
+#include "vtkApertureSkyTexture.h"
 #include "vtkApertureText.h"
 #include "vtkApertureVertexLightingVS.h"
 #include "vtkHorizonLighting.h"
@@ -1336,21 +1337,11 @@ void vtkApertureLightingInterface::UploadSkyTable(vtkRenderer* renderer)
   }
   vtkSmartPointer<vtkImageData> table;
   table.TakeReference(this->SkyEnvironment->NewCapTable(64, 32, 16));
-  int dims[3];
-  table->GetDimensions(dims);
   if (!this->SkyTable)
   {
     this->SkyTable = vtkSmartPointer<vtkTextureObject>::New();
   }
-  this->SkyTable->SetContext(window);
-  // Around the seam in azimuth, clamped at the poles and at the radii's ends.
-  this->SkyTable->SetWrapS(vtkTextureObject::Repeat);
-  this->SkyTable->SetWrapT(vtkTextureObject::ClampToEdge);
-  this->SkyTable->SetWrapR(vtkTextureObject::ClampToEdge);
-  this->SkyTable->SetMinificationFilter(vtkTextureObject::Linear);
-  this->SkyTable->SetMagnificationFilter(vtkTextureObject::Linear);
-  this->SkyTable->Create3DFromRaw(dims[0], dims[1], dims[2], 3, VTK_FLOAT,
-    vtkFloatArray::SafeDownCast(table->GetPointData()->GetScalars())->GetPointer(0));
+  vtkApertureSkyTexture::Upload(table, this->SkyTable, window);
   this->SkyTableTime = time;
 }
 

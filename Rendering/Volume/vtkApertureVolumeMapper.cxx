@@ -10,10 +10,10 @@
 =========================================================================*/
 #include "vtkApertureVolumeMapper.h"
 
+#include "vtkApertureSkyTexture.h"
 #include "vtkApertureVolumeFS.h"
 #include "vtkDataArray.h"
 #include "vtkEnvironmentMap.h"
-#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
@@ -383,17 +383,7 @@ bool vtkApertureVolumeMapper::UploadSkyTable(vtkRenderer* ren)
   }
   vtkSmartPointer<vtkImageData> table;
   table.TakeReference(this->SkyEnvironment->NewCapRadianceTable(64, 32, 32));
-  int dims[3];
-  table->GetDimensions(dims);
-  this->SkyTable->SetContext(window);
-  // Around the seam in azimuth, clamped at the poles and at the radii's ends.
-  this->SkyTable->SetWrapS(vtkTextureObject::Repeat);
-  this->SkyTable->SetWrapT(vtkTextureObject::ClampToEdge);
-  this->SkyTable->SetWrapR(vtkTextureObject::ClampToEdge);
-  this->SkyTable->SetMinificationFilter(vtkTextureObject::Linear);
-  this->SkyTable->SetMagnificationFilter(vtkTextureObject::Linear);
-  if (!this->SkyTable->Create3DFromRaw(dims[0], dims[1], dims[2], 3, VTK_FLOAT,
-        vtkFloatArray::SafeDownCast(table->GetPointData()->GetScalars())->GetPointer(0)))
+  if (!vtkApertureSkyTexture::Upload(table, this->SkyTable, window))
   {
     this->WarnOnce("the sky environment's 3D texture could not be created");
     return false;

@@ -139,8 +139,8 @@ bool Report(bool ok, const char* what, double value, double limit)
   return ok;
 }
 
-// Constant apertures of one bent normal and radius over the volume.
-vtkSmartPointer<vtkImageData> ConstantApertures(
+// A mapper of the volume whose apertures are one bent normal and radius everywhere.
+vtkSmartPointer<vtkApertureVolumeMapper> ConstantMapper(
   vtkImageData* volume, const double bent[3], double radius)
 {
   auto apertures = vtkSmartPointer<vtkImageData>::New();
@@ -159,7 +159,10 @@ vtkSmartPointer<vtkImageData> ConstantApertures(
   }
   apertures->GetPointData()->AddArray(bentArray);
   apertures->GetPointData()->AddArray(radiusArray);
-  return apertures;
+  auto mapper = vtkSmartPointer<vtkApertureVolumeMapper>::New();
+  mapper->SetInputData(volume);
+  mapper->SetApertureData(apertures);
+  return mapper;
 }
 
 // A random unit bent normal and radius (0.05 pi to pi), and the normal as the texture holds it
@@ -196,9 +199,7 @@ bool TestTwin()
     {
       double bent[3], quantized[3], radius;
       RandomAperture(bent, quantized, radius);
-      vtkNew<vtkApertureVolumeMapper> mapper;
-      mapper->SetInputData(volume);
-      mapper->SetApertureData(ConstantApertures(volume, bent, radius));
+      auto mapper = ConstantMapper(volume, bent, radius);
       mapper->SetShadingMode(mode);
       const double lightRadius = c % 3 == 0 ? 0.05 : 0.4;
       mapper->SetLightRadius(lightRadius);
@@ -274,9 +275,7 @@ bool TestEnvironmentSky()
     scene.Volume->SetOrientation(0.0, 0.0, c % 3 ? 25.0 * c : 0.0);
     double bent[3], quantized[3], radius;
     RandomAperture(bent, quantized, radius);
-    vtkNew<vtkApertureVolumeMapper> mapper;
-    mapper->SetInputData(volume);
-    mapper->SetApertureData(ConstantApertures(volume, bent, radius));
+    auto mapper = ConstantMapper(volume, bent, radius);
     mapper->SetSkyEnvironment(environment);
     scene.Volume->SetMapper(mapper);
     double axis[4] = { quantized[0], quantized[1], quantized[2], 0.0 }, world[4];
@@ -297,9 +296,7 @@ bool TestEnvironmentSky()
   environment->SetImage(uniform);
   double bent[3], quantized[3], radius;
   RandomAperture(bent, quantized, radius);
-  vtkNew<vtkApertureVolumeMapper> withEnvironment;
-  withEnvironment->SetInputData(volume);
-  withEnvironment->SetApertureData(ConstantApertures(volume, bent, radius));
+  auto withEnvironment = ConstantMapper(volume, bent, radius);
   withEnvironment->SetSkyEnvironment(environment);
   scene.Volume->SetMapper(withEnvironment);
   const double lit = scene.Pixel();
