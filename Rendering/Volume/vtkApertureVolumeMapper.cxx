@@ -17,6 +17,7 @@
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
+#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -349,20 +350,22 @@ void vtkApertureVolumeMapper::SetLightUniforms(vtkRenderer* ren, vtkVolume* vol)
 void vtkApertureVolumeMapper::SkyMatrix(vtkVolume* vol, float matrix[9])
 {
   // Data axes to world (the volume's matrix; the shader makes the axis unit again), then world
-  // to the environment's frame.
-  double toEnvironment[9];
-  this->SkyEnvironment->GetWorldToEnvironment(toEnvironment);
-  vtkMatrix4x4* toWorld = vol->GetMatrix();
+  // to the environment's frame; column-major for GLSL.
+  double toEnvironment[3][3], toWorld[3][3], product[3][3];
+  this->SkyEnvironment->GetWorldToEnvironment(toEnvironment[0]);
   for (int row = 0; row < 3; ++row)
   {
     for (int column = 0; column < 3; ++column)
     {
-      double sum = 0.0;
-      for (int k = 0; k < 3; ++k)
-      {
-        sum += toEnvironment[3 * row + k] * toWorld->GetElement(k, column);
-      }
-      matrix[3 * column + row] = static_cast<float>(sum);
+      toWorld[row][column] = vol->GetMatrix()->GetElement(row, column);
+    }
+  }
+  vtkMath::Multiply3x3(toEnvironment, toWorld, product);
+  for (int row = 0; row < 3; ++row)
+  {
+    for (int column = 0; column < 3; ++column)
+    {
+      matrix[3 * column + row] = static_cast<float>(product[row][column]);
     }
   }
 }
