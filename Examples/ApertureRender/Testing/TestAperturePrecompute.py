@@ -18,6 +18,8 @@ import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOImage import vtkPNGReader
 
+from tool_run import run_tool
+
 EXE, DATA, WORK = sys.argv[1:4]
 os.makedirs(WORK, exist_ok=True)
 failures = []
@@ -34,7 +36,7 @@ def path(name):
 
 
 def run(*args):
-    return subprocess.run([EXE, *args], capture_output=True, text=True, timeout=600)
+    return run_tool([EXE, *args], text=True)
 
 
 def gdalinfo(name, *flags):

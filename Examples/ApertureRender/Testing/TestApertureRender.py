@@ -29,6 +29,8 @@ from vtkmodules.vtkIOPLY import vtkPLYWriter
 from vtkmodules.vtkIOXML import (vtkXMLImageDataReader, vtkXMLImageDataWriter,
                                  vtkXMLPolyDataReader, vtkXMLPolyDataWriter)
 
+from tool_run import run_tool
+
 EXE, DATA, WORK = sys.argv[1:4]
 os.makedirs(WORK, exist_ok=True)
 FAST = ["--rays", "16", "--size", "200x150", "--max-grid", "96"]
@@ -47,8 +49,7 @@ def path(name):
 
 def run(*args, env=None):
     # UTF-8 whatever the locale: the messages must be valid UTF-8, ASCII or not.
-    return subprocess.run([EXE, *args], capture_output=True, encoding="utf-8", timeout=600,
-                          env=env)
+    return run_tool([EXE, *args], encoding="utf-8", env=env)
 
 
 def read_png(name):
@@ -633,7 +634,7 @@ for facing, compass in ((1.0, "E"), (-1.0, "W")):
 def expect_safe_failure(what, args, status, escaped, env=None):
     """Refused with one line on stderr that is valid UTF-8, holds no byte below 0x20 but its
     final newline, is at most 400 characters long and shows `escaped` (the quoted bytes, escaped)."""
-    result = subprocess.run([EXE, *args], capture_output=True, timeout=600, env=env)
+    result = run_tool([EXE, *args], env=env)
     err = result.stderr.replace(b"\r\n", b"\n")
     lines = [line for line in err.split(b"\n")[:-1] if not line.startswith(b"==")]
     try:
