@@ -496,6 +496,7 @@ void vtkApertureLightingInterface::SetSkyEnvironment(vtkEnvironmentMap* environm
     previous->UnRegister(this);
   }
   this->SkyTableTime = 0;
+  this->SkyWedgesTime = 0;
   this->Modified();
 }
 
@@ -832,7 +833,8 @@ bool vtkApertureLightingInterface::ReplaceShaderLight(
   {
     ReplaceVertexLightingCode(vs, gs, fs, renderer, lightComplexity, lightCount,
       this->GetNumberOfPackedAttributes(packedLayout),
-      this->GetVertexLightingDeclarations(packedLayout));
+      this->GetVertexLightingDeclarations(packedLayout),
+      this->SkyEnvironment && this->ShadingMode == HORIZON);
   }
   else if (packedLayout > 0)
   {
@@ -863,6 +865,11 @@ std::string vtkApertureLightingInterface::GetFragmentDeclarations(
   if (perVertex)
   {
     dec << "#define APERTURE_VERTEX_LIGHTING\n";
+  }
+  // An environment sky above horizons comes through their wedges, per vertex or per fragment.
+  if (this->SkyEnvironment && this->ShadingMode == HORIZON && (perVertex || horizonSectors > 0))
+  {
+    dec << "#define APERTURE_HORIZON_ENVIRONMENT\n#define HORIZON_LIGHTING_ENVIRONMENT\n";
   }
   if (horizonSectors > 0)
   {
@@ -947,6 +954,7 @@ std::string vtkApertureLightingInterface::GetVertexLightingDeclarations(int pack
     return dec.str();
   }
   dec << "#define HORIZON_LIGHTING_SECTORS " << packedLayout << "\n"
+      << (this->SkyEnvironment ? "#define HORIZON_LIGHTING_ENVIRONMENT\n" : "")
       << vtkHorizonLighting::GetGLSLConstants() << vtkHorizonLightingCodeGLSL << "\n"
       << vtkHorizonLightingGLSL << "\n"
       << vtkHorizonLightingVS << "\n";
@@ -956,7 +964,7 @@ std::string vtkApertureLightingInterface::GetVertexLightingDeclarations(int pack
 //------------------------------------------------------------------------------
 void vtkApertureLightingInterface::ReplaceVertexLightingCode(std::string& vs, std::string& gs,
   std::string& fs, vtkRenderer* renderer, int lightComplexity, int lightCount, int attributes,
-  const std::string& modeDeclarations)
+  const std::string& modeDeclarations, bool environment)
 {
   std::ostringstream vsDec, vsImpl, gsDec, gsImpl, fsDec;
   vsDec << "//VTK::Normal::Dec\n"
@@ -985,7 +993,18 @@ void vtkApertureLightingInterface::ReplaceVertexLightingCode(std::string& vs, st
     results.push_back(light + ".x");
     results.push_back(light + ".y");
   }
-  results.emplace_back("apertureVertexSky()");
+  if (environment)
+  {
+    vsImpl << "    vec3 apertureVertexEnvironment = horizonLightingEnvironmentSky(normalMC, "
+              "apertureVertexCoverage, apertureSkyCosine != 0);\n";
+    results.insert(results.end(),
+      { "apertureVertexEnvironment.r", "apertureVertexEnvironment.g",
+        "apertureVertexEnvironment.b" });
+  }
+  else
+  {
+    results.emplace_back("apertureVertexSky()");
+  }
   const int outputs = static_cast<int>(results.size() + 3) / 4;
   results.resize(4 * outputs, "0.0");
   std::ostringstream read;
@@ -1010,8 +1029,9 @@ void vtkApertureLightingInterface::ReplaceVertexLightingCode(std::string& vs, st
     read << "  apertureVertexLights[" << i << "] = vec2(" << value(2 * i) << ", "
          << value(2 * i + 1) << ");\n";
   }
-  read << "  apertureVertexSky = " << value(2 * lightCount)
-       << ";\n  apertureVertexLightIndex = 0;\n}\n";
+  const int sky = 2 * lightCount;
+  read << "  apertureVertexSky = vec3(" << value(sky) << ", " << value(environment ? sky + 1 : sky)
+       << ", " << value(environment ? sky + 2 : sky) << ");\n  apertureVertexLightIndex = 0;\n}\n";
   vsImpl << "  }\n//VTK::Light::Impl";
   vtkShaderProgram::Substitute(vs, "//VTK::Normal::Dec", vsDec.str());
   vtkShaderProgram::Substitute(vs, "//VTK::Light::Impl", vsImpl.str());
@@ -1057,6 +1077,12 @@ void vtkApertureLightingInterface::SetShaderParameters(vtkShaderProgram* program
     program->SetUniformMatrix("apertureViewToModel", toModel);
   }
   this->SetSkyParameters(program, renderer);
+  if (program->IsUniformUsed("horizonLightingSkyWedges") && this->SkyEnvironment &&
+    this->UploadSkyWedges(renderer, normalMatrix))
+  {
+    this->SkyWedges->Activate();
+    program->SetUniformi("horizonLightingSkyWedges", this->SkyWedges->GetTextureUnit());
+  }
   this->SetLightParameters(program, renderer);
   this->SetTextureParameters(program, renderer, inputTCoords, shift, scale);
 }
@@ -1346,6 +1372,66 @@ void vtkApertureLightingInterface::UploadSkyTable(vtkRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
+bool vtkApertureLightingInterface::UploadSkyWedges(
+  vtkRenderer* renderer, vtkMatrix3x3* normalMatrix)
+{
+  // The model's frame to world: the normal matrix (model to view, a rotation over the actor's
+  // uniform scale), then the camera's rotation transposed.
+  vtkMatrix4x4* view = renderer->GetActiveCamera()->GetModelViewTransformMatrix();
+  double frame[9];
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      frame[3 * i + j] = 0.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        frame[3 * i + j] += view->GetElement(k, i) * normalMatrix->GetElement(k, j);
+      }
+    }
+  }
+  double toEnvironment[9];
+  this->SkyEnvironment->GetWorldToEnvironment(toEnvironment);
+  double key[9];
+  vtkMath::Multiply3x3(reinterpret_cast<const double(*)[3]>(toEnvironment),
+    reinterpret_cast<const double(*)[3]>(frame), reinterpret_cast<double(*)[3]>(key));
+  const double scale =
+    std::cbrt(std::abs(vtkMath::Determinant3x3(reinterpret_cast<const double(*)[3]>(key))));
+  for (double& value : key)
+  {
+    value /= scale;
+  }
+  // Cameras move the view and the normal matrix together: rebuild only when the model turns
+  // against the environment (beyond rounding), or the environment's image changed.
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  const vtkMTimeType time = this->SkyEnvironment->GetImageMTime();
+  bool same =
+    this->SkyWedges && this->SkyWedgesTime == time && this->SkyWedges->GetContext() == window;
+  for (int i = 0; i < 9 && same; ++i)
+  {
+    same = std::abs(key[i] - this->SkyWedgesFrame[i]) <= 1e-6;
+  }
+  if (same)
+  {
+    return true;
+  }
+  vtkSmartPointer<vtkImageData> table;
+  table.TakeReference(this->SkyEnvironment->NewWedgeTable(256, 64, frame));
+  if (!this->SkyWedges)
+  {
+    this->SkyWedges = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  if (!vtkApertureSkyTexture::Upload(table, this->SkyWedges, window))
+  {
+    this->SkyWedgesTime = 0;
+    return false;
+  }
+  std::copy(key, key + 9, this->SkyWedgesFrame);
+  this->SkyWedgesTime = time;
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkApertureLightingInterface::DeactivateTexture()
 {
   if (this->Texture)
@@ -1355,6 +1441,10 @@ void vtkApertureLightingInterface::DeactivateTexture()
   if (this->SkyTable)
   {
     this->SkyTable->Deactivate();
+  }
+  if (this->SkyWedges)
+  {
+    this->SkyWedges->Deactivate();
   }
   if (this->HorizonTexture)
   {
@@ -1374,6 +1464,11 @@ void vtkApertureLightingInterface::ReleaseGraphicsResources(vtkWindow* window)
   {
     this->SkyTable->ReleaseGraphicsResources(window);
     this->SkyTable = nullptr;
+  }
+  if (this->SkyWedges)
+  {
+    this->SkyWedges->ReleaseGraphicsResources(window);
+    this->SkyWedges = nullptr;
   }
   if (this->HorizonTexture)
   {

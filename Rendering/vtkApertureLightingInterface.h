@@ -143,7 +143,10 @@ public:
    * as a 2D texture array of 4 sectors a layer (32 bytes a texel at 32 sectors), filtered
    * linearly between texels and shaded per fragment. The uniform sky is the cosine-weighted
    * sky through the sectors' open wedges (or their open fraction without SkyCosineWeighting); an
-   * environment sky still comes through the cap.
+   * environment sky comes through the same wedges (vtkHorizonLighting::EnvironmentSkyTransfer(),
+   * from vtkEnvironmentMap::NewWedgeTable() in the model's frame: 256 azimuths × 64 elevations,
+   * built again only when the model turns against the environment), where the vertex shader or
+   * the fragment shader shades the sky.
    */
   void SetHorizonAnglesArrayName(const char* name);
   vtkGetCharFromStdStringMacro(HorizonAnglesArrayName);
@@ -383,13 +386,17 @@ private:
   std::string GetVertexLightingDeclarations(int packedLayout);
   static void ReplaceVertexLightingCode(std::string& vs, std::string& gs, std::string& fs,
     vtkRenderer* renderer, int lightComplexity, int lightCount, int attributes,
-    const std::string& modeDeclarations);
+    const std::string& modeDeclarations, bool environment);
   // Warns about a new problem (none when empty) once, and remembers it; the same for the masks.
   void Report(const std::string& problem);
   void ReportMask(const std::string& problem);
   // Builds the environment sky's table and uploads it as a 3D texture, when the environment's
   // image or blur changed.
   void UploadSkyTable(vtkRenderer* renderer);
+  // Builds the environment's wedge table in the model's frame and uploads it as a 3D texture,
+  // when the environment's image changed or the model turned against it; false when OpenGL
+  // cannot make it.
+  bool UploadSkyWedges(vtkRenderer* renderer, vtkMatrix3x3* normalMatrix);
 
   vtkTimeStamp ShaderTime;
   vtkSmartPointer<vtkTextureObject> Texture;
@@ -408,6 +415,9 @@ private:
   int CheckedMaskBits = 0;
   std::string LastMaskProblem;
   vtkMTimeType SkyTableTime = 0;
+  vtkSmartPointer<vtkTextureObject> SkyWedges;
+  vtkMTimeType SkyWedgesTime = 0;
+  double SkyWedgesFrame[9] = { 0, 0, 0, 0, 0, 0, 0, 0, 0 };
   std::string LastProblem;
   vtkDataArray* CheckedArrays[2] = { nullptr, nullptr };
   vtkMTimeType CheckedTime = 0;

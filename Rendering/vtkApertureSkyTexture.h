@@ -13,9 +13,10 @@
  * @brief   an environment's cap table as the 3D texture the shaders read (private)
  *
  * vtkEnvironmentMap tables its cap integrals by the axis's azimuth and polar angle and by the
- * cap's radius (NewCapTable() for surfaces, NewCapRadianceTable() for volumes). Both mappers read
- * them through one kind of texture: repeated around the seam in azimuth, clamped at the poles and
- * at the radii's ends, filtered linearly.
+ * cap's radius (NewCapTable() for surfaces, NewCapRadianceTable() for volumes), and over wedges
+ * of a model's sky for horizons (NewWedgeTable(), whose shader reads no closer than half a texel
+ * to its seam). Both mappers read them through one kind of texture: repeated around the seam in
+ * azimuth, clamped at the poles and at the radii's ends, filtered linearly.
  */
 
 #ifndef vtkApertureSkyTexture_h

@@ -642,6 +642,101 @@ vtkImageData* vtkEnvironmentMap::NewTable(int columns, int rows, int radii, bool
 }
 
 //------------------------------------------------------------------------------
+vtkImageData* vtkEnvironmentMap::NewWedgeTable(
+  int azimuths, int elevations, const double frameToWorld[9])
+{
+  this->Update();
+  azimuths = std::max(1, azimuths);
+  elevations = std::max(2, elevations);
+  vtkImageData* table = vtkImageData::New();
+  table->SetDimensions(azimuths + 1, elevations, 3);
+  vtkNew<vtkFloatArray> values;
+  values->SetName("WedgeIrradiance");
+  values->SetNumberOfComponents(3);
+  values->SetNumberOfTuples(static_cast<vtkIdType>(azimuths + 1) * elevations * 3);
+  values->Fill(0.0);
+  table->GetPointData()->SetScalars(values);
+  double fromFrame[3][3], toFrame[3][3];
+  for (int i = 0; i < 9; ++i)
+  {
+    fromFrame[i / 3][i % 3] = frameToWorld[i];
+  }
+  const double determinant = vtkMath::Determinant3x3(fromFrame);
+  if (!this->Image || !std::isfinite(determinant) || determinant == 0.0)
+  {
+    return table;
+  }
+  vtkMath::Invert3x3(fromFrame, toFrame);
+  // bins[(azimuth bin, elevation bin, axis)] (RGB): each sample adds to the bin it falls in.
+  const std::vector<double> bins = this->WedgeBins(azimuths, elevations, toFrame);
+  // Columns sum the bins below their azimuth, rows those above their elevation.
+  float* out = values->GetPointer(0);
+  const vtkIdType plane = static_cast<vtkIdType>(azimuths + 1) * elevations;
+  for (int a = 0; a < 3; ++a)
+  {
+    for (int j = elevations - 2; j >= 0; --j)
+    {
+      for (int i = 1; i <= azimuths; ++i)
+      {
+        const size_t bin = 3 * (3 * (static_cast<size_t>(i - 1) * elevations + j) + a);
+        for (int k = 0; k < 3; ++k)
+        {
+          const vtkIdType here = a * plane + static_cast<vtkIdType>(j) * (azimuths + 1) + i;
+          const double sum = bins[bin + k] + out[3 * (here - 1) + k] +
+            out[3 * (here + azimuths + 1) + k] - out[3 * (here + azimuths) + k];
+          out[3 * here + k] = static_cast<float>(sum);
+        }
+      }
+    }
+  }
+  return table;
+}
+
+//------------------------------------------------------------------------------
+std::vector<double> vtkEnvironmentMap::WedgeBins(
+  int azimuths, int elevations, const double toFrame[3][3])
+{
+  const int w = WorkingWidth, h = WorkingHeight, split = 4;
+  double toWorld[9];
+  this->GetWorldToEnvironment(toWorld); // transposed below: the environment's frame to world
+  std::vector<double> bins(9 * static_cast<size_t>(azimuths) * elevations, 0.0);
+  const double elevationStep = Pi / (elevations - 1);
+  for (int sub = 0; sub < h * split; ++sub)
+  {
+    const int row = sub / split;
+    const double v0 = double(sub) / (h * split), v1 = (sub + 1.0) / (h * split);
+    const double solidAngle =
+      (2.0 * Pi / (w * split)) * (std::sin(Pi * (v1 - 0.5)) - std::sin(Pi * (v0 - 0.5)));
+    for (int column = 0; column < w * split; ++column)
+    {
+      double local[3], world[3], d[3];
+      Local((column + 0.5) / (w * split), 0.5 * (v0 + v1), local);
+      for (int k = 0; k < 3; ++k)
+      {
+        world[k] = toWorld[k] * local[0] + toWorld[3 + k] * local[1] + toWorld[6 + k] * local[2];
+      }
+      vtkMath::Multiply3x3(toFrame, world, d);
+      vtkMath::Normalize(d);
+      const double phi = std::atan2(d[1], d[0]);
+      const int i = std::min(
+        azimuths - 1, static_cast<int>((phi < 0.0 ? phi + 2.0 * Pi : phi) / (2.0 * Pi) * azimuths));
+      const double theta = std::asin(std::min(1.0, std::max(-1.0, d[2])));
+      const int j = std::min(elevations - 2, static_cast<int>((theta + 0.5 * Pi) / elevationStep));
+      const float* radiance = &this->Working[3 * (static_cast<size_t>(row) * w + column / split)];
+      for (int a = 0; a < 3; ++a)
+      {
+        double* bin = &bins[3 * (3 * (static_cast<size_t>(i) * elevations + j) + a)];
+        for (int k = 0; k < 3; ++k)
+        {
+          bin[k] += radiance[k] * d[a] * solidAngle;
+        }
+      }
+    }
+  }
+  return bins;
+}
+
+//------------------------------------------------------------------------------
 void vtkEnvironmentMap::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

@@ -173,6 +173,19 @@ public:
   vtkImageData* NewCapRadianceTable(int columns, int rows, int radii);
 
   /**
+   * The environment over wedges of another frame's sky, tabled for horizons
+   * (vtkHorizonLighting::EnvironmentSkyTransfer()): a float RGB image of (azimuths + 1) ×
+   * elevations × 3 points (`WedgeIrradiance`). Point (i, j, a) holds ∫ L(ω) ω_a dω over the
+   * directions of that frame with azimuth below φ_i = 2πi/azimuths (from its +x toward +y) and
+   * elevation above e_j = −π/2 + πj/(elevations − 1) (above its xy plane), ω_a the direction's
+   * component a in the frame; the wedge between two azimuths is the difference of two columns.
+   * frameToWorld (row-major 3 × 3, a rotation with a uniform scale allowed) takes the frame's
+   * directions to world ones. Quadrature over the working image, each pixel split 4 × 4.
+   * The caller owns the image.
+   */
+  vtkImageData* NewWedgeTable(int azimuths, int elevations, const double frameToWorld[9]);
+
+  /**
    * The matrix (row-major 3 × 3) taking a world direction into the environment's own frame (x
    * north, y east, z up, unrotated), where (u, v) follow from the conventions:
    * φ = atan2(y, x), θ = asin(z).
@@ -193,6 +206,9 @@ protected:
   bool Resample();
   void Blur();
   void ProjectHarmonics();
+  // NewWedgeTable()'s quadrature: the working image's samples binned by azimuth and elevation
+  // in the frame that toFrame takes world directions to, as 3 axes × RGB a bin.
+  std::vector<double> WedgeBins(int azimuths, int elevations, const double toFrame[3][3]);
 
   vtkImageData* Image = nullptr;
   int UpAxis = Z;

@@ -195,6 +195,82 @@ double vtkHorizonLighting::SkyTransfer(const double normal[3], const float* hori
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// A sector's wedge floor (elevation e, its sine and cosine): the horizon h, or the tangent plane
+// of the unit normal n along the sector's middle (cos, sin) where that is higher.
+void WedgeFloor(
+  const double n[3], double h, const double middle[2], double& e, double& sinE, double& cosE)
+{
+  h = std::min(HalfPi, std::max(-HalfPi, h));
+  const double t = -(n[0] * middle[0] + n[1] * middle[1]) / std::max(n[2], 1e-4);
+  e = h;
+  sinE = std::sin(h);
+  cosE = std::cos(h);
+  if (sinE < t * cosE)
+  {
+    cosE = 1.0 / std::sqrt(1.0 + t * t);
+    sinE = t * cosE;
+    e = std::atan(t);
+  }
+}
+
+// Adds n · (a wedge table's value at azimuth phi and elevation e, bilinear) times sign to rgb.
+void AddWedgeTable(const float* table, int azimuths, int elevations, double phi, double e,
+  const double n[3], double sign, double rgb[3])
+{
+  const double x = std::min(double(azimuths), std::max(0.0, phi / (2.0 * Pi) * azimuths));
+  const double y = std::min(elevations - 1.0, std::max(0.0, (e + HalfPi) / Pi * (elevations - 1)));
+  const int i = std::min(azimuths - 1, static_cast<int>(x));
+  const int j = std::min(elevations - 2, static_cast<int>(y));
+  const double fx = x - i, fy = y - j;
+  const size_t row = static_cast<size_t>(azimuths) + 1;
+  const size_t plane = row * elevations;
+  for (int a = 0; a < 3; ++a)
+  {
+    const float* p = table + 3 * (a * plane + j * row + i);
+    for (int k = 0; k < 3; ++k)
+    {
+      const double low = (1.0 - fx) * p[k] + fx * p[3 + k];
+      const double high = (1.0 - fx) * p[3 * row + k] + fx * p[3 * row + 3 + k];
+      rgb[k] += sign * n[a] * ((1.0 - fy) * low + fy * high);
+    }
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+void vtkHorizonLighting::EnvironmentSkyTransfer(const double normal[3], const float* horizons,
+  int sectors, const float* table, int azimuths, int elevations, double coverage,
+  double cosineCoverage, bool cosineWeighted, double rgb[3])
+{
+  double n[3], open[2];
+  rgb[0] = rgb[1] = rgb[2] = 0.0;
+  if (sectors < 1 || !horizons || !table || azimuths < 1 || elevations < 2 ||
+    std::isnan(coverage) || std::isnan(cosineCoverage) || !vtkSphericalCap::UnitAxis(normal, n))
+  {
+    return;
+  }
+  const double width = 2.0 * Pi / sectors;
+  for (int k = 0; k < sectors; ++k)
+  {
+    const double middle[2] = { std::cos((k + 0.5) * width), std::sin((k + 0.5) * width) };
+    double e, sinE, cosE;
+    WedgeFloor(n, horizons[k], middle, e, sinE, cosE);
+    AddWedgeTable(table, azimuths, elevations, (k + 1) * width, e, n, 1.0, rgb);
+    AddWedgeTable(table, azimuths, elevations, k * width, e, n, -1.0, rgb);
+  }
+  OpenSums(n, horizons, sectors, open);
+  const double all = cosineWeighted ? open[1] : open[0];
+  const double lost = cosineWeighted ? cosineCoverage : coverage;
+  const double share = all > 0.0 ? std::max(0.0, 1.0 - lost / all) : 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    rgb[k] = std::max(0.0, rgb[k]) * share / Pi;
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkHorizonLighting::OpenSums(
   const double normal[3], const float* horizons, int sectors, double sums[2])
 {
@@ -215,16 +291,8 @@ void vtkHorizonLighting::OpenSums(
       bound[1] * step[0] + bound[0] * step[1] };
     const double middle[2] = { bound[0] * halfStep[0] - bound[1] * halfStep[1],
       bound[1] * halfStep[0] + bound[0] * halfStep[1] };
-    // The wedge's floor: the horizon, or the tangent plane (slope t) where that is higher.
-    const double h = std::min(HalfPi, std::max(-HalfPi, double(horizons[k])));
-    const double t = -(n[0] * middle[0] + n[1] * middle[1]) / std::max(n[2], 1e-4);
-    double e = h, sinE = std::sin(h), cosE = std::cos(h);
-    if (sinE < t * cosE)
-    {
-      cosE = 1.0 / std::sqrt(1.0 + t * t);
-      sinE = t * cosE;
-      e = std::atan(t);
-    }
+    double e, sinE, cosE;
+    WedgeFloor(n, horizons[k], middle, e, sinE, cosE);
     // Over elevations e … π/2: solid angle, ∫ cos²e de and ∫ sin e cos e de.
     const double horizontal = 0.25 * Pi - 0.5 * (e + sinE * cosE);
     sums[0] += width * (1.0 - sinE);

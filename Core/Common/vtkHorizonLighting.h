@@ -37,6 +37,8 @@
  *   (exact per sector, as the sweep integrates its apertures), less what the lights cover:
  *   cosine-weighted, (1/π)(∫ n·ω dω − the lights' cosine integrals), 1 for an open plane; or
  *   as the visible fraction of the hemisphere, (Ω − the lights' solid angles)/2π.
+ * - EnvironmentSkyTransfer(): an HDR environment through the same wedges, from a table of its
+ *   radiance integrated over wedges (vtkEnvironmentMap::NewWedgeTable()).
  * - EncodeAngle() / DecodeAngle(): 8 bits per sector for the GPU. The code c stores
  *   t = sign(h) √(|h|/(π/2)) as c = round(127.5 (t + 1)), so steps are finest near the horizontal
  *   plane where low lights set: 0.0074 rad at 8°, 0.017 rad at 45°, 0.025 rad at the zenith.
@@ -113,6 +115,20 @@ public:
    */
   VTK_WRAPEXCLUDE static double SkyTransfer(const double n[3], const float* horizons, int sectors,
     double coverage, double cosineCoverage, bool cosineWeighted);
+
+  /**
+   * An environment sky through the open wedges (RGB, as reflected radiance with albedo 1):
+   * (1/π) Σ_k n·W_k, W_k = ∫ L(ω) ω dω over sector k's wedge above its floor (as SkyTransfer()
+   * has it), read from a wedge table in the horizons' frame (vtkEnvironmentMap::NewWedgeTable(),
+   * `azimuths` + 1 columns × `elevations` rows × 3 axes of RGB, bilinear) as the difference of
+   * the sector's two bounding azimuths; then scaled by the share of the open wedges the lights
+   * leave (of their cosine integral, or of their solid angle without cosineWeighted). An
+   * environment of radiance 1 gives the cosine-weighted SkyTransfer() (to the table's
+   * quadrature). Zeros for unusable input.
+   */
+  VTK_WRAPEXCLUDE static void EnvironmentSkyTransfer(const double n[3], const float* horizons,
+    int sectors, const float* table, int azimuths, int elevations, double coverage,
+    double cosineCoverage, bool cosineWeighted, double rgb[3]);
 
   /**
    * The open wedges' solid angle (sums[0]) and ∫ n·ω dω over them (sums[1]), which do not

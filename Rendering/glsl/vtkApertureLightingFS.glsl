@@ -3,7 +3,8 @@
 // and VTK's lighting uniforms first, and these defines: APERTURE_SHADING and APERTURE_LAMBERT
 // (vtkSphericalCap's model and Lambert factor), APERTURE_LIGHT_COUNT, and optionally
 // APERTURE_PER_TEXEL (apertures from a texture), APERTURE_SKY_ENVIRONMENT (the sky from an
-// environment), APERTURE_HORIZONS (lights and the uniform sky above per-sector horizons, with
+// environment: through the cap, or with APERTURE_HORIZON_ENVIRONMENT through the horizons'
+// wedges), APERTURE_HORIZONS (lights and the uniform sky above per-sector horizons, with
 // vtkHorizonLightingGLSL first and apertureReadHorizons() written in at its mark below) and
 // APERTURE_VERTEX_LIGHTING (lights and the uniform sky evaluated per vertex, through visibility
 // masks or above horizons: apertureReadVertexLighting() at its mark below reads the interpolated
@@ -41,10 +42,10 @@ uniform mat3 apertureViewToModel;
 #endif
 
 #ifdef APERTURE_VERTEX_LIGHTING
-// Per light, its transfer and the solid angle of it the point sees; the uniform sky
-// (apertureReadVertexLighting() reads them, in the lights' order, interpolated).
+// Per light, its transfer and the solid angle of it the point sees; the sky, uniform or from the
+// environment (apertureReadVertexLighting() reads them, in the lights' order, interpolated).
 vec2 apertureVertexLights[APERTURE_LIGHT_COUNT];
-float apertureVertexSky;
+vec3 apertureVertexSky;
 int apertureVertexLightIndex;
 //APERTURE::VertexLighting::Dec
 #endif
@@ -228,7 +229,13 @@ vec4 apertureEndFragment(apertureFragment f, vec3 ambientColor, vec3 diffuseColo
   if (f.aperture.radius >= 0.0)
   {
     float cosNormalBent = dot(f.normal, f.aperture.axis);
-#if defined(APERTURE_SKY_ENVIRONMENT)
+#if defined(APERTURE_HORIZON_ENVIRONMENT) && defined(APERTURE_VERTEX_LIGHTING)
+    diffuse += apertureSkyColor * apertureVertexSky;
+#elif defined(APERTURE_HORIZON_ENVIRONMENT)
+    diffuse += apertureSkyColor *
+      horizonLightingEnvironmentSky(
+        f.normalModel, vec2(f.covered, f.coveredCosine), apertureSkyCosine != 0);
+#elif defined(APERTURE_SKY_ENVIRONMENT)
     diffuse += apertureSkyColor *
       apertureSkyEnvironment(f.aperture, f.covered, cosNormalBent, apertureSkyCosine != 0);
 #elif defined(APERTURE_VERTEX_LIGHTING)

@@ -1,6 +1,7 @@
 // ApertureLighting: the GLSL twin of vtkHorizonLighting (see that class for the conventions and
 // the formulas). Needs vtkSphericalCapGLSL (for its pi and atan2), vtkHorizonLightingCodeGLSL,
-// vtkHorizonLighting's GetGLSLConstants(), and HORIZON_LIGHTING_SECTORS, the number of sectors.
+// vtkHorizonLighting's GetGLSLConstants(), and HORIZON_LIGHTING_SECTORS, the number of sectors;
+// HORIZON_LIGHTING_ENVIRONMENT adds the environment sky, from a wedge table.
 
 // The horizons of the point being shaded, which the functions below read: GLSL passes arrays by
 // value, and a software rasteriser copied them on every call at a greater cost than the shading.
@@ -133,6 +134,21 @@ float horizonLightingLightTransfer(
   return coverage.y / (sphericalCapPi * s * s);
 }
 
+// A sector's wedge floor (elevation, its sine and cosine): the horizon h, or the tangent plane of
+// the unit normal n along the sector's middle (cos, sin) where that is higher.
+vec3 horizonLightingWedgeFloor(vec3 n, float h, vec2 middle)
+{
+  h = clamp(h, -0.5 * sphericalCapPi, 0.5 * sphericalCapPi);
+  float t = -(n.x * middle.x + n.y * middle.y) / max(n.z, 1e-4);
+  vec3 wedge = vec3(h, sin(h), cos(h));
+  if (wedge.y < t * wedge.z)
+  {
+    float cosE = inversesqrt(1.0 + t * t);
+    wedge = vec3(sphericalCapAtan2(t, 1.0), t * cosE, cosE);
+  }
+  return wedge;
+}
+
 // vtkHorizonLighting::SkyTransfer(): the sky through the sectors' open wedges less the lights'
 // coverage (their sums).
 float horizonLightingSkyTransfer(
@@ -155,17 +171,10 @@ float horizonLightingSkyTransfer(
   {
     vec2 next = vec2(bound.x * step.x - bound.y * step.y, bound.y * step.x + bound.x * step.y);
     vec2 middle = vec2(bound.x * halfStep.x - bound.y * halfStep.y, bound.y * halfStep.x + bound.x * halfStep.y);
-    float h = clamp(horizonLightingHorizons[k], -0.5 * sphericalCapPi, 0.5 * sphericalCapPi);
-    float t = -(n.x * middle.x + n.y * middle.y) / max(n.z, 1e-4);
-    float e = h;
-    float sinE = sin(h);
-    float cosE = cos(h);
-    if (sinE < t * cosE)
-    {
-      cosE = inversesqrt(1.0 + t * t);
-      sinE = t * cosE;
-      e = sphericalCapAtan2(t, 1.0);
-    }
+    vec3 wedge = horizonLightingWedgeFloor(n, horizonLightingHorizons[k], middle);
+    float e = wedge.x;
+    float sinE = wedge.y;
+    float cosE = wedge.z;
     float horizontal = 0.25 * sphericalCapPi - 0.5 * (e + sinE * cosE);
     open += width * (1.0 - sinE);
     openCosine += (n.x * (next.y - bound.y) + n.y * (bound.x - next.x)) * horizontal +
@@ -175,3 +184,46 @@ float horizonLightingSkyTransfer(
   return cosineWeighted ? max(0.0, openCosine - coverage.y) / sphericalCapPi
                         : max(0.0, open - coverage.x) / (2.0 * sphericalCapPi);
 }
+
+#ifdef HORIZON_LIGHTING_ENVIRONMENT
+// vtkEnvironmentMap::NewWedgeTable() in the horizons' frame: azimuths + 1 columns, elevations
+// rows, the three axes as layers, filtered linearly.
+uniform sampler3D horizonLightingSkyWedges;
+
+// n . (the wedge table at azimuth phi and elevation e).
+vec3 horizonLightingWedgeAt(vec3 n, float phi, float e)
+{
+  vec3 size = vec3(textureSize(horizonLightingSkyWedges, 0));
+  vec2 uv = vec2(phi / (2.0 * sphericalCapPi) * (size.x - 1.0),
+    (e + 0.5 * sphericalCapPi) / sphericalCapPi * (size.y - 1.0));
+  uv = (clamp(uv, vec2(0.0), size.xy - 1.0) + 0.5) / size.xy;
+  return n.x * texture(horizonLightingSkyWedges, vec3(uv, 0.5 / 3.0)).rgb +
+    n.y * texture(horizonLightingSkyWedges, vec3(uv, 1.5 / 3.0)).rgb +
+    n.z * texture(horizonLightingSkyWedges, vec3(uv, 2.5 / 3.0)).rgb;
+}
+
+// vtkHorizonLighting::EnvironmentSkyTransfer(): the environment through the sectors' open wedges,
+// scaled by the share of them the lights leave (their sums).
+vec3 horizonLightingEnvironmentSky(vec3 n, vec2 coverage, bool cosineWeighted)
+{
+  float ln = length(n);
+  if (any(isnan(n)) || !(ln > 0.0) || isinf(ln) || any(isnan(coverage)))
+  {
+    return vec3(0.0);
+  }
+  n = n / ln;
+  float width = 2.0 * sphericalCapPi / float(HORIZON_LIGHTING_SECTORS);
+  vec3 sum = vec3(0.0);
+  for (int k = 0; k < HORIZON_LIGHTING_SECTORS; ++k)
+  {
+    float middle = (float(k) + 0.5) * width;
+    float e = horizonLightingWedgeFloor(n, horizonLightingHorizons[k], vec2(cos(middle), sin(middle))).x;
+    sum += horizonLightingWedgeAt(n, float(k + 1) * width, e) - horizonLightingWedgeAt(n, float(k) * width, e);
+  }
+  float all = cosineWeighted ? horizonLightingSkyTransfer(n, vec2(0.0), true) * sphericalCapPi
+                             : horizonLightingSkyTransfer(n, vec2(0.0), false) * 2.0 * sphericalCapPi;
+  float lost = cosineWeighted ? coverage.y : coverage.x;
+  float share = all > 0.0 ? max(0.0, 1.0 - lost / all) : 0.0;
+  return max(sum, vec3(0.0)) * share / sphericalCapPi;
+}
+#endif

@@ -10,7 +10,8 @@
 =========================================================================*/
 // The Horizon mode of vtkApertureLightingMapper, pixel by pixel: camera-facing squares of two
 // triangles (the model's +z toward the camera is "up"), each with its own normal and horizons,
-// lit by suns of several sizes low over the horizons, by a sphere light and by the sky. Every
+// lit by suns of several sizes low over the horizons, by a sphere light and by the sky, uniform
+// or from an HDR environment through the horizons' wedges. Every
 // tested pixel must match vtkHorizonLighting on the 8-bit horizons within 1/255: per vertex (24
 // sectors in vertex attributes, through vtkApertureLightingMapper and through
 // vtkCompositeApertureLightingMapper with the squares in two blocks) at the triangle's vertices,
@@ -22,6 +23,7 @@
 #include "vtkApertureLightingMapper.h"
 #include "vtkApertureTestHarness.h"
 #include "vtkCompositeApertureLightingMapper.h"
+#include "vtkEnvironmentMap.h"
 #include "vtkHorizonLighting.h"
 #include "vtkSphericalCap.h"
 
@@ -162,12 +164,42 @@ struct Scene
   double Radius;   // angular (directional) or world (positional)
   bool Positional;
   double Sky;
+  bool Environment = false; // the sky from Bench's environment, else uniform
 };
+
+// An environment whose red channel (the one the pixels are read from) is brightest low in the
+// north-east and dim to the south, and the wedge table of the model's frame (the world's here)
+// that the mapper builds from it.
+constexpr int WedgeAzimuths = 256;
+constexpr int WedgeElevations = 64;
+vtkSmartPointer<vtkEnvironmentMap> MakeEnvironment(std::vector<float>& wedges)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(128, 64, 1);
+  vtkNew<vtkFloatArray> radiance;
+  radiance->SetNumberOfComponents(3);
+  radiance->SetNumberOfTuples(128 * 64);
+  for (vtkIdType p = 0; p < 128 * 64; ++p)
+  {
+    const double u = (p % 128 + 0.5) / 128, v = (p / 128 + 0.5) / 64;
+    const double glow = std::exp(-15.0 * ((u - 0.6) * (u - 0.6) + (v - 0.6) * (v - 0.6)));
+    radiance->SetTuple3(p, 0.3 + 0.4 * v + 2.0 * glow, 0.5, 0.5);
+  }
+  image->GetPointData()->SetScalars(radiance);
+  auto environment = vtkSmartPointer<vtkEnvironmentMap>::New();
+  environment->SetImage(image);
+  const double identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+  vtkSmartPointer<vtkImageData> table;
+  table.TakeReference(environment->NewWedgeTable(WedgeAzimuths, WedgeElevations, identity));
+  auto* values = vtkFloatArray::SafeDownCast(table->GetPointData()->GetScalars());
+  wedges.assign(values->GetPointer(0), values->GetPointer(0) + values->GetNumberOfValues());
+  return environment;
+}
 
 // The expected 0..1 value at world position p of a quad with these horizons (as the GPU sees
 // them), or of the exact cap where `cap` is set.
 double Expected(const Scene& s, const double n[3], const std::vector<float>& h, const double p[3],
-  double intensity, bool cap)
+  double intensity, bool cap, const std::vector<float>& wedges)
 {
   double l[3] = { s.Light[0], s.Light[1], s.Light[2] };
   double rl = s.Radius;
@@ -188,8 +220,13 @@ double Expected(const Scene& s, const double n[3], const std::vector<float>& h, 
   double coverage, cosine;
   const double t =
     vtkHorizonLighting::LightTransfer(n, h.data(), sectors, l, rl, &coverage, &cosine);
-  const double sky = vtkHorizonLighting::SkyTransfer(n, h.data(), sectors, coverage, cosine, true);
-  return std::min(1.0, intensity * t + s.Sky * sky);
+  double sky[3] = { vtkHorizonLighting::SkyTransfer(n, h.data(), sectors, coverage, cosine, true) };
+  if (s.Environment)
+  {
+    vtkHorizonLighting::EnvironmentSkyTransfer(n, h.data(), sectors, wedges.data(), WedgeAzimuths,
+      WedgeElevations, coverage, cosine, true, sky);
+  }
+  return std::min(1.0, intensity * t + s.Sky * sky[0]);
 }
 
 class Bench
@@ -227,6 +264,7 @@ public:
     const Scene& s, const std::vector<Quad>& quads, int gpuSectors, bool cap, bool perVertex)
   {
     this->Mapper->SetSkyIntensity(s.Sky);
+    this->Mapper->SetSkyEnvironment(s.Environment ? this->Environment : nullptr);
     this->Light->SetPositional(s.Positional);
     this->Light->SetPosition(s.Light);
     this->Light->SetFocalPoint(0, 0, 0);
@@ -247,7 +285,7 @@ public:
         for (int c = 0; c < 4; ++c)
         {
           const double p[3] = { x0 + Size * offsets[c][0], y0 + Size * offsets[c][1], 0.0 };
-          corner[c] = Expected(s, q.Normal, h, p, this->Intensity, cap);
+          corner[c] = Expected(s, q.Normal, h, p, this->Intensity, cap, this->Wedges);
         }
         for (int py = Size * j + 3; py < Size * (j + 1) - 3; py += 4)
         {
@@ -260,7 +298,8 @@ public:
               ? (1.0 - u) * corner[0] + (u - v) * corner[1] + v * corner[2]
               : (1.0 - v) * corner[0] + u * corner[2] + (v - u) * corner[3];
             const double want = 255.0 *
-              (perVertex ? interpolated : Expected(s, q.Normal, h, p, this->Intensity, cap));
+              (perVertex ? interpolated
+                         : Expected(s, q.Normal, h, p, this->Intensity, cap, this->Wedges));
             const double d = std::abs(pixels->GetValue(3 * (px + Side * py)) - want);
             worst = std::max(worst, d);
           }
@@ -271,6 +310,8 @@ public:
   }
 
   const double Intensity = 0.8;
+  std::vector<float> Wedges;
+  vtkSmartPointer<vtkEnvironmentMap> Environment = MakeEnvironment(this->Wedges);
   vtkNew<vtkApertureLightingMapper> Mapper;
   vtkNew<vtkActor> Actor;
   vtkNew<vtkRenderer> Renderer;
@@ -291,6 +332,8 @@ std::vector<Scene> Scenes()
   }
   scenes.push_back({ { 0.2, 0.3, 0.9 }, 0.1, false, 0.3 });
   scenes.push_back({ { 80.0, -60.0, 40.0 }, 30.0, true, 0.2 });
+  scenes.push_back({ { 0.98, 0.1, 0.14 }, 0.064, false, 0.4, true });
+  scenes.push_back({ { 80.0, -60.0, 40.0 }, 30.0, true, 0.3, true });
   return scenes;
 }
 
@@ -303,7 +346,8 @@ void TestPerVertex(Bench& bench)
   {
     const double worst = bench.Run(s, quads, 24, false, true);
     std::cout << "per vertex, 24 sectors, " << (s.Positional ? "sphere light R=" : "sun r=")
-              << s.Radius << ", sky " << s.Sky << ": max |GPU - CPU| = " << worst << "/255\n";
+              << s.Radius << ", sky " << s.Sky << (s.Environment ? " (environment)" : "")
+              << ": max |GPU - CPU| = " << worst << "/255\n";
     // 0.5 for the 8-bit rounding, 0.5 for single precision.
     Check(
       worst <= 1.0, "Horizon pixels per vertex differ from vtkHorizonLighting (/255)", worst, 1.0);
@@ -408,6 +452,8 @@ void TestComposite(Bench& bench)
   for (const Scene& s : Scenes())
   {
     composite->GetApertureLighting()->SetSkyIntensity(s.Sky);
+    composite->GetApertureLighting()->SetSkyEnvironment(
+      s.Environment ? bench.Environment : nullptr);
     const double worst = bench.Run(s, quads, 24, false, true);
     std::cout << "composite, two blocks: max |GPU - CPU| = " << worst << "/255\n";
     Check(worst <= 1.0, "Horizon pixels of the composite mapper differ (/255)", worst, 1.0);
@@ -451,7 +497,8 @@ void TestPerTexel(Bench& bench)
   {
     const double worst = bench.Run(s, quads, 32, false, false);
     std::cout << "per texel, 48 sectors as 32, " << (s.Positional ? "sphere light R=" : "sun r=")
-              << s.Radius << ", sky " << s.Sky << ": max |GPU - CPU| = " << worst << "/255\n";
+              << s.Radius << ", sky " << s.Sky << (s.Environment ? " (environment)" : "")
+              << ": max |GPU - CPU| = " << worst << "/255\n";
     Check(
       worst <= 1.0, "Horizon pixels per texel differ from vtkHorizonLighting (/255)", worst, 1.0);
   }

@@ -10,20 +10,25 @@
 =========================================================================*/
 // Evaluates the GLSL twin of vtkHorizonLighting on the GPU (a full-screen pass writing floats,
 // one texel per case) for random horizons, normals and lights of every size, and bad input, and
-// compares with the C++ values.
+// compares with the C++ values; the environment sky with a wedge table of a coloured sky.
 
 #include "vtkApertureGLSLEvaluator.h"
+#include "vtkApertureSkyTexture.h"
 #include "vtkApertureTestHarness.h"
+#include "vtkEnvironmentMap.h"
 #include "vtkHorizonLighting.h"
 #include "vtkHorizonLightingCodeGLSL.h"
 #include "vtkHorizonLightingGLSL.h"
 #include "vtkSphericalCap.h"
 #include "vtkSphericalCapGLSL.h"
 
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
 #include "vtkMath.h"
 #include "vtkMinimalStandardRandomSequence.h"
 #include "vtkNew.h"
 #include "vtkOpenGLQuadHelper.h"
+#include "vtkPointData.h"
 #include "vtkShaderProgram.h"
 
 #include <algorithm>
@@ -38,6 +43,8 @@ namespace
 constexpr double Pi = vtkMath::Pi();
 constexpr int Sectors = 32;
 constexpr int Width = 64; // cases per row
+constexpr int Azimuths = 256;
+constexpr int Elevations = 64;
 
 // A normal (xyz) and light radius (w); a light direction; 32 horizons.
 struct Case
@@ -48,7 +55,8 @@ struct Case
 };
 
 // Pass 0: transfer, coverage (solid angle, cosine), cosine-weighted sky. Pass 1: the open sky,
-// a decoded code, the horizon at the light's azimuth.
+// a decoded code, the horizon at the light's azimuth. Pass 2: the environment sky (RGB), less the
+// light's cosine coverage, and its red less the light's solid angle.
 const char* EvaluatorFS = R"(//VTK::System::Dec
 //VTK::Output::Dec
 uniform sampler2D normals;
@@ -75,6 +83,11 @@ void main()
   if (pass == 0)
   {
     gl_FragData[0] = vec4(transfer, coverage, horizonLightingSkyTransfer(p.xyz, coverage, true));
+  }
+  else if (pass == 2)
+  {
+    gl_FragData[0] = vec4(horizonLightingEnvironmentSky(p.xyz, coverage, true),
+      horizonLightingEnvironmentSky(p.xyz, coverage, false).r);
   }
   else
   {
@@ -132,14 +145,52 @@ std::vector<Case> MakeCases()
   return cases;
 }
 
+// A wedge table of a coloured environment, brightest near the horizon to the east, in the
+// horizons' frame (the world's).
+std::vector<float> MakeWedgeTable(vtkImageData* table)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(128, 64, 1);
+  vtkNew<vtkFloatArray> radiance;
+  radiance->SetNumberOfComponents(3);
+  radiance->SetNumberOfTuples(128 * 64);
+  for (vtkIdType p = 0; p < 128 * 64; ++p)
+  {
+    const double u = (p % 128 + 0.5) / 128, v = (p / 128 + 0.5) / 64;
+    const double glow = std::exp(-20.0 * ((u - 0.75) * (u - 0.75) + (v - 0.55) * (v - 0.55)));
+    const double rgb[3] = { 0.2 + 5.0 * glow, 0.3 + v, 0.6 + 0.5 * v };
+    radiance->SetTuple(p, rgb);
+  }
+  image->GetPointData()->SetScalars(radiance);
+  vtkNew<vtkEnvironmentMap> environment;
+  environment->SetImage(image);
+  const double identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+  vtkSmartPointer<vtkImageData> wedges;
+  wedges.TakeReference(environment->NewWedgeTable(Azimuths, Elevations, identity));
+  table->DeepCopy(wedges);
+  auto* values = vtkFloatArray::SafeDownCast(table->GetPointData()->GetScalars());
+  return std::vector<float>(
+    values->GetPointer(0), values->GetPointer(0) + values->GetNumberOfValues());
+}
+
 // The C++ values of a case for one pass, in the shader's layout.
-void Expected(const Case& c, int index, int pass, double out[4])
+void Expected(const Case& c, int index, int pass, const std::vector<float>& wedges, double out[4])
 {
   const double n[3] = { c.Normal[0], c.Normal[1], c.Normal[2] };
   const double l[3] = { c.Light[0], c.Light[1], c.Light[2] };
   double coverage = 0.0, cosine = 0.0;
   const double transfer =
     vtkHorizonLighting::LightTransfer(n, c.Horizons, Sectors, l, c.Normal[3], &coverage, &cosine);
+  if (pass == 2)
+  {
+    double solid[3];
+    vtkHorizonLighting::EnvironmentSkyTransfer(
+      n, c.Horizons, Sectors, wedges.data(), Azimuths, Elevations, coverage, cosine, true, out);
+    vtkHorizonLighting::EnvironmentSkyTransfer(
+      n, c.Horizons, Sectors, wedges.data(), Azimuths, Elevations, coverage, cosine, false, solid);
+    out[3] = solid[0];
+    return;
+  }
   if (pass == 0)
   {
     out[0] = transfer;
@@ -173,25 +224,32 @@ int TestHorizonLightingGLSL(int, char*[])
   const vtkSmartPointer<vtkTextureObject> uploaded[3] = { evaluator.Upload(Width, height, normals),
     evaluator.Upload(Width, height, lights),
     evaluator.Upload(Width * Sectors / 4, height, horizons) };
+  vtkNew<vtkImageData> wedgeImage;
+  const std::vector<float> wedges = MakeWedgeTable(wedgeImage);
+  vtkNew<vtkTextureObject> wedgeTexture;
+  vtkApertureSkyTexture::Upload(wedgeImage, wedgeTexture, win);
   const std::vector<std::pair<const char*, vtkTextureObject*>> textures = {
-    { "normals", uploaded[0] }, { "lights", uploaded[1] }, { "horizonTexels", uploaded[2] }
+    { "normals", uploaded[0] }, { "lights", uploaded[1] }, { "horizonTexels", uploaded[2] },
+    { "horizonLightingSkyWedges", wedgeTexture }
   };
 
   std::string fs = EvaluatorFS;
   vtkShaderProgram::Substitute(fs, "//VTK::HorizonLighting::Dec",
-    "#define HORIZON_LIGHTING_SECTORS " + std::to_string(Sectors) + "\n" +
-      vtkSphericalCap::GetGLSLConstants() + vtkSphericalCapGLSL +
-      vtkHorizonLighting::GetGLSLConstants() + vtkHorizonLightingCodeGLSL + vtkHorizonLightingGLSL);
+    "#define HORIZON_LIGHTING_SECTORS " + std::to_string(Sectors) +
+      "\n#define HORIZON_LIGHTING_ENVIRONMENT\n" + vtkSphericalCap::GetGLSLConstants() +
+      vtkSphericalCapGLSL + vtkHorizonLighting::GetGLSLConstants() + vtkHorizonLightingCodeGLSL +
+      vtkHorizonLightingGLSL);
   vtkOpenGLQuadHelper quad(win, nullptr, fs.c_str(), "");
   if (!quad.Program || !quad.Program->GetCompiled())
   {
     std::cerr << "The GLSL twin does not compile\n";
     return EXIT_FAILURE;
   }
-  const char* names[2][4] = { { "LightTransfer", "coverage", "cosine coverage",
+  const char* names[3][4] = { { "LightTransfer", "coverage", "cosine coverage",
                                 "SkyTransfer cosine-weighted" },
-    { "SkyTransfer", "DecodeAngle", "HorizonAt", "" } };
-  for (int pass = 0; pass < 2; ++pass)
+    { "SkyTransfer", "DecodeAngle", "HorizonAt", "" },
+    { "EnvironmentSkyTransfer red", "green", "blue", "red by solid angle" } };
+  for (int pass = 0; pass < 3; ++pass)
   {
     const std::vector<float> result = evaluator.Run(quad, Width, height, textures,
       [pass](vtkShaderProgram* program) { program->SetUniformi("pass", pass); });
@@ -199,18 +257,20 @@ int TestHorizonLightingGLSL(int, char*[])
     for (size_t i = 0; i < cases.size(); ++i)
     {
       double want[4];
-      Expected(cases[i], static_cast<int>(i), pass, want);
+      Expected(cases[i], static_cast<int>(i), pass, wedges, want);
       // Transfers and skies (1 = a full light or sky) within 2e-3, half an 8-bit level: float
       // and double may take the closed form and the quadrature on either side of the edge;
       // coverages within 2e-3 of the light's own; angles within 1e-5.
       const double cap = vtkSphericalCap::SolidAngleFromCapRadius(vtkSphericalCap::ClampLightRadius(
         std::isnan(cases[i].Normal[3]) ? 0.0 : cases[i].Normal[3]));
-      const double tolerance[2][4] = { { 2e-3, 2e-3 * cap, 2e-3 * cap, 2e-3 },
-        { 2e-3, 1e-5, 1e-5, 1.0 } };
+      // The environment within 2e-3 of its value or of 1: the texture's filter (GPUs keep 8 bits of
+      // its weights) against the C++'s double bilinear, and the skies' closed forms as above.
+      const double tolerance[3][4] = { { 2e-3, 2e-3 * cap, 2e-3 * cap, 2e-3 },
+        { 2e-3, 1e-5, 1e-5, 1.0 }, { 2e-3, 2e-3, 2e-3, 2e-3 } };
       for (int k = 0; k < 4; ++k)
       {
         const double got = result[4 * i + k];
-        const double error = std::abs(got - want[k]);
+        const double error = std::abs(got - want[k]) / (pass == 2 ? std::max(1.0, want[k]) : 1.0);
         vtkApertureTest::Check(std::isfinite(got) && error <= tolerance[pass][k],
           std::string(names[pass][k]) + " of case " + std::to_string(i), got, want[k]);
         worst[k] = std::max(worst[k], std::isfinite(error) ? error : 0.0);

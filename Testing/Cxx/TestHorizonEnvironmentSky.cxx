@@ -1,0 +1,270 @@
+/*=========================================================================
+
+  Program:   ApertureLighting
+  Module:    TestHorizonEnvironmentSky.cxx
+
+  Copyright (c) ApertureLighting developers
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+// An HDR environment through horizons (vtkHorizonLighting::EnvironmentSkyTransfer() from
+// vtkEnvironmentMap::NewWedgeTable()): an environment of radiance 1 gives the uniform sky's
+// SkyTransfer(), with and without the lights' coverage; a smooth coloured environment, turned
+// against a turned and scaled frame, gives the wedges' integral summed by brute force; bad input
+// gives zeros.
+
+#include "vtkApertureTestHarness.h"
+#include "vtkEnvironmentMap.h"
+#include "vtkHorizonLighting.h"
+
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkMath.h"
+#include "vtkMinimalStandardRandomSequence.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkSmartPointer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace
+{
+constexpr double Pi = vtkMath::Pi();
+constexpr int Sectors = 32;
+constexpr int Azimuths = 256;
+constexpr int Elevations = 64;
+using vtkApertureTest::Check;
+
+// A latitude-longitude image of radiance f(direction in the environment's own frame).
+vtkSmartPointer<vtkImageData> LatLong(
+  int w, int h, const std::function<void(const double d[3], double rgb[3])>& f)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(w, h, 1);
+  vtkNew<vtkFloatArray> radiance;
+  radiance->SetNumberOfComponents(3);
+  radiance->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
+  for (int j = 0; j < h; ++j)
+  {
+    for (int i = 0; i < w; ++i)
+    {
+      const double phi = 2.0 * Pi * ((i + 0.5) / w - 0.5), theta = Pi * ((j + 0.5) / h - 0.5);
+      const double d[3] = { std::cos(theta) * std::cos(phi), std::cos(theta) * std::sin(phi),
+        std::sin(theta) };
+      double rgb[3];
+      f(d, rgb);
+      radiance->SetTuple(static_cast<vtkIdType>(j) * w + i, rgb);
+    }
+  }
+  image->GetPointData()->SetScalars(radiance);
+  return image;
+}
+
+// A sky brighter toward its zenith, a broad warm glow near its horizon and a cool floor.
+void SmoothSky(const double d[3], double rgb[3])
+{
+  const double glow[3] = { 0.6, 0.3, 0.2 };
+  const double lobe = std::exp(6.0 * (vtkMath::Dot(d, glow) / vtkMath::Norm(glow) - 1.0));
+  rgb[0] = 0.3 + 0.5 * std::max(0.0, d[2]) + 4.0 * lobe;
+  rgb[1] = 0.4 + 0.6 * std::max(0.0, d[2]) + 2.0 * lobe;
+  rgb[2] = 0.2 + 0.9 * std::max(0.0, d[2]) + 0.5 * lobe;
+}
+
+// Smooth random horizons and a normal facing more or less up.
+void RandomPoint(vtkMinimalStandardRandomSequence* random, std::vector<float>& h, double n[3])
+{
+  auto next = [random](double low, double high)
+  {
+    random->Next();
+    return random->GetRangeValue(low, high);
+  };
+  const double level = next(-0.4, 0.6), amplitude = next(0.0, 0.5), phase = next(0.0, 2 * Pi);
+  h.resize(Sectors);
+  for (int k = 0; k < Sectors; ++k)
+  {
+    const double value = level + amplitude * std::cos(2 * Pi * (k + 0.5) / Sectors + phase);
+    h[k] = static_cast<float>(std::min(0.5 * Pi, std::max(-0.5 * Pi, value)));
+  }
+  n[0] = next(-0.7, 0.7);
+  n[1] = next(-0.7, 0.7);
+  n[2] = next(0.4, 1.2);
+}
+
+// (1/π) Σ_k ∫ L(ω) n·ω dω over sector k above max(h_k, the tangent plane at its middle), by a
+// fine grid of each wedge, with the frame's directions taken to world by frameToWorld.
+void BruteEnvironment(vtkEnvironmentMap* environment, const double frameToWorld[9],
+  const double normal[3], const std::vector<float>& h, double rgb[3])
+{
+  double n[3] = { normal[0], normal[1], normal[2] };
+  vtkMath::Normalize(n);
+  const int perSector = 24, rows = 240;
+  rgb[0] = rgb[1] = rgb[2] = 0.0;
+  for (int k = 0; k < Sectors; ++k)
+  {
+    const double middle = 2.0 * Pi * (k + 0.5) / Sectors;
+    const double tangent = std::atan(-(n[0] * std::cos(middle) + n[1] * std::sin(middle)) / n[2]);
+    const double bottom = std::max(double(h[k]), tangent);
+    const double dphi = 2.0 * Pi / Sectors / perSector;
+    for (int j = 0; j < perSector; ++j)
+    {
+      const double phi = 2.0 * Pi * k / Sectors + (j + 0.5) * dphi;
+      for (int i = 0; i < rows; ++i)
+      {
+        const double e0 = bottom + (0.5 * Pi - bottom) * i / rows;
+        const double e1 = bottom + (0.5 * Pi - bottom) * (i + 1) / rows;
+        const double e = 0.5 * (e0 + e1);
+        const double w[3] = { std::cos(e) * std::cos(phi), std::cos(e) * std::sin(phi),
+          std::sin(e) };
+        double world[3], radiance[3];
+        for (int a = 0; a < 3; ++a)
+        {
+          world[a] = vtkMath::Dot(frameToWorld + 3 * a, w);
+        }
+        environment->Radiance(world, radiance);
+        const double weight = vtkMath::Dot(n, w) * (std::sin(e1) - std::sin(e0)) * dphi / Pi;
+        for (int c = 0; c < 3; ++c)
+        {
+          rgb[c] += radiance[c] * weight;
+        }
+      }
+    }
+  }
+}
+
+// The wedge table of an environment in a frame, as floats.
+std::vector<float> WedgeTable(vtkEnvironmentMap* environment, const double frameToWorld[9])
+{
+  vtkSmartPointer<vtkImageData> table;
+  table.TakeReference(environment->NewWedgeTable(Azimuths, Elevations, frameToWorld));
+  auto* values = vtkFloatArray::SafeDownCast(table->GetPointData()->GetScalars());
+  int dims[3];
+  table->GetDimensions(dims);
+  Check(values && dims[0] == Azimuths + 1 && dims[1] == Elevations && dims[2] == 3,
+    "the wedge table has (azimuths + 1) x elevations x 3 RGB points", dims[0], Azimuths + 1);
+  return values
+    ? std::vector<float>(values->GetPointer(0), values->GetPointer(0) + values->GetNumberOfValues())
+    : std::vector<float>();
+}
+
+// Radiance 1 everywhere: the uniform sky's values, with random coverage by lights.
+void TestUniform()
+{
+  vtkNew<vtkEnvironmentMap> environment;
+  environment->SetImage(
+    LatLong(64, 32, [](const double*, double rgb[3]) { rgb[0] = rgb[1] = rgb[2] = 1.0; }));
+  const double identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+  const std::vector<float> table = WedgeTable(environment, identity);
+  vtkNew<vtkMinimalStandardRandomSequence> random;
+  random->SetSeed(3);
+  double worst = 0.0;
+  for (int i = 0; i < 300 && !table.empty(); ++i)
+  {
+    std::vector<float> h;
+    double n[3];
+    RandomPoint(random, h, n);
+    random->Next();
+    const double share = i % 3 == 0 ? 0.0 : random->GetValue();
+    const double open[2] = { 2.0 * Pi *
+        vtkHorizonLighting::SkyTransfer(n, h.data(), Sectors, 0.0, 0.0, false),
+      Pi * vtkHorizonLighting::SkyTransfer(n, h.data(), Sectors, 0.0, 0.0, true) };
+    for (int weighted = 0; weighted < 2; ++weighted)
+    {
+      double rgb[3];
+      vtkHorizonLighting::EnvironmentSkyTransfer(n, h.data(), Sectors, table.data(), Azimuths,
+        Elevations, share * open[0], share * open[1], weighted != 0, rgb);
+      const double want = open[1] / Pi * (1.0 - share);
+      const double error = std::abs(rgb[0] - want);
+      worst = std::max(worst, error);
+      Check(error <= 2e-3 && rgb[1] == rgb[0] && rgb[2] == rgb[0],
+        "radiance 1 gives the uniform sky, case " + std::to_string(i) +
+          (weighted ? " (cosine-weighted share)" : " (solid-angle share)"),
+        rgb[0], want);
+    }
+  }
+  std::cout << "radiance 1: max |environment - uniform sky| = " << worst << "\n";
+}
+
+// A smooth coloured environment, turned about another axis than the frame's, against brute force.
+void TestSmooth()
+{
+  vtkNew<vtkEnvironmentMap> environment;
+  environment->SetImage(LatLong(512, 256, SmoothSky));
+  environment->SetUpAxisToY();
+  environment->SetAzimuth(35.0);
+  // The frame: turned 0.8 rad about (1, 2, 3) and scaled by 2.
+  double axis[3] = { 1.0, 2.0, 3.0 };
+  vtkMath::Normalize(axis);
+  double quaternion[4] = { std::cos(0.4), std::sin(0.4) * axis[0], std::sin(0.4) * axis[1],
+    std::sin(0.4) * axis[2] };
+  double rotation[3][3];
+  vtkMath::QuaternionToMatrix3x3(quaternion, rotation);
+  double frame[9], unit[9];
+  for (int i = 0; i < 9; ++i)
+  {
+    unit[i] = rotation[i / 3][i % 3];
+    frame[i] = 2.0 * unit[i];
+  }
+  const std::vector<float> table = WedgeTable(environment, frame);
+  vtkNew<vtkMinimalStandardRandomSequence> random;
+  random->SetSeed(11);
+  double worst = 0.0;
+  for (int i = 0; i < 24 && !table.empty(); ++i)
+  {
+    std::vector<float> h;
+    double n[3], got[3], want[3];
+    RandomPoint(random, h, n);
+    vtkHorizonLighting::EnvironmentSkyTransfer(
+      n, h.data(), Sectors, table.data(), Azimuths, Elevations, 0.0, 0.0, true, got);
+    BruteEnvironment(environment, unit, n, h, want);
+    for (int c = 0; c < 3; ++c)
+    {
+      const double error = std::abs(got[c] - want[c]) / std::max(want[c], 0.05);
+      worst = std::max(worst, error);
+      Check(error <= 0.01,
+        "a turned smooth sky against brute force, case " + std::to_string(i) + " channel " +
+          std::to_string(c),
+        got[c], want[c]);
+    }
+  }
+  std::cout << "smooth turned sky: max relative error against brute force = " << worst << "\n";
+}
+
+// NaN or zero normals, no table, NaN coverage, a singular frame: zeros, never NaN.
+void TestBadInput()
+{
+  vtkNew<vtkEnvironmentMap> environment;
+  environment->SetImage(LatLong(64, 32, SmoothSky));
+  const double singular[9] = { 1, 0, 0, 0, 0, 0, 0, 0, 1 };
+  const std::vector<float> flat = WedgeTable(environment, singular);
+  const double identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+  const std::vector<float> table = WedgeTable(environment, identity);
+  Check(std::all_of(flat.begin(), flat.end(), [](float v) { return v == 0.0f; }),
+    "a singular frame gives an empty table", flat.empty() ? -1.0 : flat[3 * 300], 0.0);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<float> h(Sectors, 0.1f);
+  const double normals[3][3] = { { nan, 0, 1 }, { 0, 0, 0 }, { 0, 0, 1 } };
+  for (int i = 0; i < 4; ++i)
+  {
+    double rgb[3] = { 7, 7, 7 };
+    vtkHorizonLighting::EnvironmentSkyTransfer(normals[std::min(i, 2)], h.data(), Sectors,
+      i == 2 ? nullptr : table.data(), Azimuths, Elevations, i == 3 ? nan : 0.0, 0.0, true, rgb);
+    Check(rgb[0] == 0.0 && rgb[1] == 0.0 && rgb[2] == 0.0,
+      "bad input " + std::to_string(i) + " gives no sky", rgb[0], 0.0);
+  }
+}
+}
+
+int TestHorizonEnvironmentSky(int, char*[])
+{
+  TestUniform();
+  TestSmooth();
+  TestBadInput();
+  return vtkApertureTest::Result();
+}
