@@ -12,6 +12,7 @@
 
 #include "vtkApertureLightCapGLSL.h"
 #include "vtkApertureLightingFS.h"
+#include "vtkApertureSMP.h"
 #include "vtkApertureSkyTexture.h"
 #include "vtkApertureText.h"
 #include "vtkApertureVertexLightingVS.h"
@@ -346,6 +347,39 @@ void ViewToEnvironment(vtkEnvironmentMap* environment, vtkRenderer* renderer, vt
       }
       result->SetElement(j, i, sum);
     }
+  }
+}
+
+// The model's frame to world (row-major): the normal matrix (model to view, a rotation over the
+// actor's uniform scale), then the camera's rotation transposed.
+void ModelToWorld(vtkRenderer* renderer, vtkMatrix3x3* normalMatrix, double frame[9])
+{
+  vtkMatrix4x4* view = renderer->GetActiveCamera()->GetModelViewTransformMatrix();
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      frame[3 * i + j] = 0.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        frame[3 * i + j] += view->GetElement(k, i) * normalMatrix->GetElement(k, j);
+      }
+    }
+  }
+}
+
+// The model's frame (ModelToWorld()'s) to the environment's, scaled to a rotation (row-major).
+void ModelToEnvironment(vtkEnvironmentMap* environment, const double frame[9], double result[9])
+{
+  double toEnvironment[9];
+  environment->GetWorldToEnvironment(toEnvironment);
+  vtkMath::Multiply3x3(reinterpret_cast<const double(*)[3]>(toEnvironment),
+    reinterpret_cast<const double(*)[3]>(frame), reinterpret_cast<double(*)[3]>(result));
+  const double scale =
+    std::cbrt(std::abs(vtkMath::Determinant3x3(reinterpret_cast<const double(*)[3]>(result))));
+  for (int i = 0; i < 9; ++i)
+  {
+    result[i] /= scale;
   }
 }
 }
@@ -772,16 +806,143 @@ void vtkApertureLightingInterface::PackAttributes(
     attribute->Fill(0.0);
     values.push_back(attribute->GetPointer(0));
   }
+  vtkDataArray* normals = data->GetPointData()->GetNormals();
+  const bool usable =
+    normals && normals->GetNumberOfComponents() == 3 && normals->GetNumberOfTuples() == n;
   if (masks)
   {
     // CheckVisibilityMask() made sure of the array's type.
     PackMasks(static_cast<vtkUnsignedCharArray*>(array), n, layout, values);
-    return;
   }
+  else
+  {
+    PackHorizons(array, usable ? normals : nullptr, n, layout, values);
+  }
+  if (this->SkyEnvironment)
+  {
+    attributes.push_back(this->ComputeVertexEnvironment(data, layout, array));
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkApertureLightingInterface::GetNumberOfVertexAttributes(int layout) const
+{
+  return this->GetNumberOfPackedAttributes(layout) + (this->SkyEnvironment ? 1 : 0);
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureLightingInterface::UpdateVertexEnvironment(vtkActor* actor)
+{
+  std::vector<double> key;
+  if (this->SkyEnvironment &&
+    (this->ShadingMode == HORIZON || this->ShadingMode == VISIBILITY_MASK))
+  {
+    vtkMatrix4x4* matrix = actor->GetMatrix();
+    key.resize(21);
+    for (int i = 0; i < 9; ++i)
+    {
+      key[i] = matrix->GetElement(i / 3, i % 3);
+    }
+    this->SkyEnvironment->GetWorldToEnvironment(&key[9]);
+    key[18] = static_cast<double>(this->SkyEnvironment->GetImageMTime());
+    key[19] = this->SkyCosineWeighting ? 1.0 : 0.0;
+    key[20] = this->ShadingMode;
+  }
+  if (key != this->VertexEnvironmentKey)
+  {
+    this->VertexEnvironmentKey = key;
+    if (!key.empty())
+    {
+      std::copy(key.begin(), key.begin() + 9, this->VertexModelToWorld);
+    }
+    this->VertexEnvironmentTime.Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkApertureLightingInterface::GetBufferMTime() const
+{
+  return std::max(this->ShaderTime.GetMTime(), this->VertexEnvironmentTime.GetMTime());
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkFloatArray> vtkApertureLightingInterface::ComputeVertexEnvironment(
+  vtkDataSet* data, int layout, vtkDataArray* packed)
+{
+  const vtkIdType n = data->GetNumberOfPoints();
+  auto sky = vtkSmartPointer<vtkFloatArray>::New();
+  sky->SetNumberOfComponents(4);
+  sky->SetNumberOfTuples(n);
+  sky->Fill(0.0);
   vtkDataArray* normals = data->GetPointData()->GetNormals();
-  const bool usable =
-    normals && normals->GetNumberOfComponents() == 3 && normals->GetNumberOfTuples() == n;
-  PackHorizons(array, usable ? normals : nullptr, n, layout, values);
+  if (!normals || normals->GetNumberOfComponents() != 3 || normals->GetNumberOfTuples() != n)
+  {
+    return sky;
+  }
+  float* out = sky->GetPointer(0);
+  const bool cosine = this->SkyCosineWeighting;
+  vtkSmartPointer<vtkImageData> table;
+  if (this->ShadingMode == VISIBILITY_MASK)
+  {
+    table.TakeReference(
+      this->SkyEnvironment->NewMeanRadianceTable(64, 32, vtkVisibilityMask::CellCapRadius(layout)));
+    const float* mean =
+      vtkFloatArray::SafeDownCast(table->GetPointData()->GetScalars())->GetPointer(0);
+    double toEnvironment[9];
+    ModelToEnvironment(this->SkyEnvironment, this->VertexModelToWorld, toEnvironment);
+    auto* mask = static_cast<vtkUnsignedCharArray*>(packed); // CheckVisibilityMask()'s type
+    const int inBits = mask ? 8 * mask->GetNumberOfComponents() : layout;
+    vtkApertureSMP::For(0, n,
+      [&](vtkIdType first, vtkIdType last)
+      {
+        std::vector<unsigned char> codes(layout / 8, 255);
+        for (vtkIdType p = first; p < last; ++p)
+        {
+          if (mask)
+          {
+            ResampleMask(mask->GetPointer(p * inBits / 8), inBits, layout, codes.data());
+          }
+          double normal[3], rgb[3];
+          normals->GetTuple(p, normal);
+          vtkVisibilityMask::EnvironmentSkyTransfer(
+            normal, codes.data(), layout, mean, 64, 32, toEnvironment, 0.0, 0.0, cosine, rgb);
+          std::copy(rgb, rgb + 3, out + 4 * p);
+        }
+      });
+    return sky;
+  }
+  table.TakeReference(this->SkyEnvironment->NewWedgeTable(256, 64, this->VertexModelToWorld));
+  const float* wedges =
+    vtkFloatArray::SafeDownCast(table->GetPointData()->GetScalars())->GetPointer(0);
+  vtkApertureSMP::For(0, n,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      std::vector<float> in(packed ? packed->GetNumberOfComponents() : 1, -0.5f * vtkMath::Pi());
+      std::vector<double> tuple(in.size());
+      std::vector<unsigned char> codes(layout);
+      std::vector<float> decoded(layout);
+      for (vtkIdType p = first; p < last; ++p)
+      {
+        if (packed)
+        {
+          EncodePoint(packed, p, layout, tuple, in, codes.data());
+        }
+        else
+        {
+          EncodeHorizons(in, layout, codes.data());
+        }
+        for (int k = 0; k < layout; ++k)
+        {
+          decoded[k] = static_cast<float>(vtkHorizonLighting::DecodeAngle(codes[k]));
+        }
+        double normal[3], rgb[3];
+        normals->GetTuple(p, normal);
+        vtkHorizonLighting::EnvironmentSkyTransfer(
+          normal, decoded.data(), layout, wedges, 256, 64, 0.0, 0.0, cosine, rgb);
+        std::copy(rgb, rgb + 3, out + 4 * p);
+      }
+    });
+  return sky;
 }
 
 //------------------------------------------------------------------------------
@@ -833,8 +994,7 @@ bool vtkApertureLightingInterface::ReplaceShaderLight(
   {
     ReplaceVertexLightingCode(vs, gs, fs, renderer, lightComplexity, lightCount,
       this->GetNumberOfPackedAttributes(packedLayout),
-      this->GetVertexLightingDeclarations(packedLayout),
-      this->SkyEnvironment && this->ShadingMode == HORIZON);
+      this->GetVertexLightingDeclarations(packedLayout), this->SkyEnvironment != nullptr);
   }
   else if (packedLayout > 0)
   {
@@ -866,10 +1026,12 @@ std::string vtkApertureLightingInterface::GetFragmentDeclarations(
   {
     dec << "#define APERTURE_VERTEX_LIGHTING\n";
   }
-  // An environment sky above horizons comes through their wedges, per vertex or per fragment.
-  if (this->SkyEnvironment && this->ShadingMode == HORIZON && (perVertex || horizonSectors > 0))
+  // An environment sky comes through what horizons or masks leave open: per vertex, or per
+  // fragment above horizons.
+  if (this->SkyEnvironment && (perVertex || horizonSectors > 0))
   {
-    dec << "#define APERTURE_HORIZON_ENVIRONMENT\n#define HORIZON_LIGHTING_ENVIRONMENT\n";
+    dec << "#define APERTURE_OPEN_ENVIRONMENT\n"
+        << (horizonSectors > 0 ? "#define HORIZON_LIGHTING_ENVIRONMENT\n" : "");
   }
   if (horizonSectors > 0)
   {
@@ -954,7 +1116,6 @@ std::string vtkApertureLightingInterface::GetVertexLightingDeclarations(int pack
     return dec.str();
   }
   dec << "#define HORIZON_LIGHTING_SECTORS " << packedLayout << "\n"
-      << (this->SkyEnvironment ? "#define HORIZON_LIGHTING_ENVIRONMENT\n" : "")
       << vtkHorizonLighting::GetGLSLConstants() << vtkHorizonLightingCodeGLSL << "\n"
       << vtkHorizonLightingGLSL << "\n"
       << vtkHorizonLightingVS << "\n";
@@ -995,8 +1156,11 @@ void vtkApertureLightingInterface::ReplaceVertexLightingCode(std::string& vs, st
   }
   if (environment)
   {
-    vsImpl << "    vec3 apertureVertexEnvironment = horizonLightingEnvironmentSky(normalMC, "
-              "apertureVertexCoverage, apertureSkyCosine != 0);\n";
+    // The environment sky, computed on the CPU, rides in the attribute after the packed ones.
+    const std::string sky = GetPackedAttributeName(attributes);
+    vsDec << "in vec4 " << sky << ";\n";
+    vsImpl << "    vec3 apertureVertexEnvironment = apertureVertexEnvironmentSky(" << sky
+           << ".rgb);\n";
     results.insert(results.end(),
       { "apertureVertexEnvironment.r", "apertureVertexEnvironment.g",
         "apertureVertexEnvironment.b" });
@@ -1375,32 +1539,9 @@ void vtkApertureLightingInterface::UploadSkyTable(vtkRenderer* renderer)
 bool vtkApertureLightingInterface::UploadSkyWedges(
   vtkRenderer* renderer, vtkMatrix3x3* normalMatrix)
 {
-  // The model's frame to world: the normal matrix (model to view, a rotation over the actor's
-  // uniform scale), then the camera's rotation transposed.
-  vtkMatrix4x4* view = renderer->GetActiveCamera()->GetModelViewTransformMatrix();
-  double frame[9];
-  for (int i = 0; i < 3; ++i)
-  {
-    for (int j = 0; j < 3; ++j)
-    {
-      frame[3 * i + j] = 0.0;
-      for (int k = 0; k < 3; ++k)
-      {
-        frame[3 * i + j] += view->GetElement(k, i) * normalMatrix->GetElement(k, j);
-      }
-    }
-  }
-  double toEnvironment[9];
-  this->SkyEnvironment->GetWorldToEnvironment(toEnvironment);
-  double key[9];
-  vtkMath::Multiply3x3(reinterpret_cast<const double(*)[3]>(toEnvironment),
-    reinterpret_cast<const double(*)[3]>(frame), reinterpret_cast<double(*)[3]>(key));
-  const double scale =
-    std::cbrt(std::abs(vtkMath::Determinant3x3(reinterpret_cast<const double(*)[3]>(key))));
-  for (double& value : key)
-  {
-    value /= scale;
-  }
+  double frame[9], key[9];
+  ModelToWorld(renderer, normalMatrix, frame);
+  ModelToEnvironment(this->SkyEnvironment, frame, key);
   // Cameras move the view and the normal matrix together: rebuild only when the model turns
   // against the environment (beyond rounding), or the environment's image changed.
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());

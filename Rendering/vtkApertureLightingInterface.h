@@ -144,9 +144,10 @@ public:
    * linearly between texels and shaded per fragment. The uniform sky is the cosine-weighted
    * sky through the sectors' open wedges (or their open fraction without SkyCosineWeighting); an
    * environment sky comes through the same wedges (vtkHorizonLighting::EnvironmentSkyTransfer(),
-   * from vtkEnvironmentMap::NewWedgeTable() in the model's frame: 256 azimuths × 64 elevations,
-   * built again only when the model turns against the environment), where the vertex shader or
-   * the fragment shader shades the sky.
+   * from vtkEnvironmentMap::NewWedgeTable() in the model's frame: 256 azimuths × 64 elevations):
+   * per vertex computed on the CPU with the vertex buffers (PackAttributes()), per fragment by
+   * the fragment shader from the table as a 3D texture, built again only when the model turns
+   * against the environment.
    */
   void SetHorizonAnglesArrayName(const char* name);
   vtkGetCharFromStdStringMacro(HorizonAnglesArrayName);
@@ -165,7 +166,8 @@ public:
    * On the GPU a mask has at most 256 bits (32 bytes, three vertex attributes); finer masks are
    * resampled (a coarse cell is open where at least half of its 2 x 2 sub-grid falls in open
    * fine cells).
-   * Both faces of a surface shade as its front. An environment sky still comes through the cap.
+   * Both faces of a surface shade as its front. An environment sky comes through the open cells
+   * (vtkVisibilityMask::EnvironmentSkyTransfer(), computed on the CPU with the vertex buffers).
    */
   void SetVisibilityMaskArrayName(const char* name);
   vtkGetCharFromStdStringMacro(VisibilityMaskArrayName);
@@ -247,6 +249,15 @@ public:
    */
   vtkMTimeType GetShaderMTime() const { return this->ShaderTime.GetMTime(); }
 
+  /**
+   * For the mappers: an environment sky through horizons or masks per vertex is computed on the
+   * CPU in the model's frame, as a vertex attribute. Each render tells the actor whose model it
+   * is; GetBufferMTime() is the time of the last change that needs new vertex buffers (new
+   * shaders, or the model turned against the environment, its image, or SkyCosineWeighting).
+   */
+  void UpdateVertexEnvironment(vtkActor* actor);
+  vtkMTimeType GetBufferMTime() const;
+
   ///@{
   /**
    * For the mappers. CheckApertures() tells whether a dataset's aperture arrays (the image's, in
@@ -289,15 +300,20 @@ public:
   ///@{
   /**
    * For the mappers: the vertex attributes that carry a layout's values per vertex
-   * (GetPackedAttributeName(i), i < GetNumberOfPackedAttributes(layout), at most
-   * GetMaximumPackedAttributes()), and their values for a dataset: bytes three to a float
-   * (exact integers), four floats to an attribute. Horizons are 8-bit codes resampled to
-   * `layout` sectors (at most GetMaximumShaderSectors(), 32), open (−π/2) where the dataset has
-   * none usable; masks are their bytes, resampled to `layout` bits, all open where the dataset
-   * has none usable.
+   * (GetPackedAttributeName(i), i < GetNumberOfPackedAttributes(layout), at most 3), and their
+   * values for a dataset: bytes three to a float (exact integers), four floats to an attribute.
+   * Horizons are 8-bit codes resampled to `layout` sectors (at most GetMaximumShaderSectors(),
+   * 32), open (−π/2) where the dataset has none usable; masks are their bytes, resampled to
+   * `layout` bits, all open where the dataset has none usable. With an environment sky one
+   * attribute follows (GetNumberOfVertexAttributes(), at most GetMaximumPackedAttributes()): the
+   * environment through the vertex's open wedges or cells around its point normal, RGB, computed
+   * without the lights (EnvironmentSkyTransfer() of vtkHorizonLighting or vtkVisibilityMask, on
+   * the decoded horizons or resampled mask, in the frame of UpdateVertexEnvironment()'s actor);
+   * zeros without point normals.
    */
   int GetNumberOfPackedAttributes(int layout) const;
-  static int GetMaximumPackedAttributes() { return 3; }
+  int GetNumberOfVertexAttributes(int layout) const;
+  static int GetMaximumPackedAttributes() { return 4; }
   static int GetMaximumShaderSectors() { return 32; }
   static int GetMaximumShaderMaskBits() { return 256; }
   static std::string GetPackedAttributeName(int i);
@@ -397,6 +413,9 @@ private:
   // when the environment's image changed or the model turned against it; false when OpenGL
   // cannot make it.
   bool UploadSkyWedges(vtkRenderer* renderer, vtkMatrix3x3* normalMatrix);
+  // The environment attribute of PackAttributes() for a dataset's points.
+  vtkSmartPointer<vtkFloatArray> ComputeVertexEnvironment(
+    vtkDataSet* data, int layout, vtkDataArray* packed);
 
   vtkTimeStamp ShaderTime;
   vtkSmartPointer<vtkTextureObject> Texture;
@@ -418,6 +437,10 @@ private:
   vtkSmartPointer<vtkTextureObject> SkyWedges;
   vtkMTimeType SkyWedgesTime = 0;
   double SkyWedgesFrame[9] = { 0, 0, 0, 0, 0, 0, 0, 0, 0 };
+  // UpdateVertexEnvironment()'s model to world, and what the environment attribute depends on.
+  double VertexModelToWorld[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+  std::vector<double> VertexEnvironmentKey;
+  vtkTimeStamp VertexEnvironmentTime;
   std::string LastProblem;
   vtkDataArray* CheckedArrays[2] = { nullptr, nullptr };
   vtkMTimeType CheckedTime = 0;

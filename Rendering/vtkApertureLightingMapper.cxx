@@ -101,6 +101,7 @@ void vtkApertureLightingMapper::RenderPiece(vtkRenderer* renderer, vtkActor* act
         (state & PerTexel) ? static_cast<vtkDataSet*>(this->Lighting->GetApertureImage()) : input)
     : 0;
   this->State = state | (this->PackedLayout << LayoutShift);
+  this->Lighting->UpdateVertexEnvironment(actor);
   this->MapApertureAttributes(input);
   this->Superclass::RenderPiece(renderer, actor);
 }
@@ -120,7 +121,7 @@ void vtkApertureLightingMapper::MapApertureAttributes(vtkPolyData* input)
   {
     const std::string name = vtkApertureLightingInterface::GetPackedAttributeName(i);
     const bool used = perVertex && this->PackedLayout > 0 &&
-      i < this->Lighting->GetNumberOfPackedAttributes(this->PackedLayout);
+      i < this->Lighting->GetNumberOfVertexAttributes(this->PackedLayout);
     wanted.emplace_back(name, used ? name : "");
   }
   for (const auto& attribute : wanted)
@@ -155,7 +156,8 @@ vtkPolyData* vtkApertureLightingMapper::GetPackedInput(vtkPolyData* input)
     { input->GetMTime(), horizons ? horizons->GetMTime() : 0, masks ? masks->GetMTime() : 0 });
   // Horizons' layouts (sectors, at most 32) and masks' (bits, at least 64) never meet.
   if (!this->PackedInput || input != this->PackedSource || time > this->PackedTime ||
-    this->PackedInputLayout != this->PackedLayout)
+    this->PackedInputLayout != this->PackedLayout ||
+    this->PackedBufferTime < this->Lighting->GetBufferMTime())
   {
     std::vector<vtkSmartPointer<vtkFloatArray>> attributes;
     this->Lighting->PackAttributes(input, this->PackedLayout, attributes);
@@ -170,6 +172,7 @@ vtkPolyData* vtkApertureLightingMapper::GetPackedInput(vtkPolyData* input)
     this->PackedTime = time;
     this->PackedInputLayout = this->PackedLayout;
     this->PackedSource = input;
+    this->PackedBufferTime = this->Lighting->GetBufferMTime();
   }
   return this->PackedInput;
 }
@@ -180,14 +183,14 @@ bool vtkApertureLightingMapper::GetNeedToRebuildBufferObjects(
 {
   // The packed attributes keep their names from one layout (or array name) to another.
   return this->Superclass::GetNeedToRebuildBufferObjects(renderer, actor) ||
-    this->BufferLayout != this->PackedLayout || this->BufferTime < this->Lighting->GetShaderMTime();
+    this->BufferLayout != this->PackedLayout || this->BufferTime < this->Lighting->GetBufferMTime();
 }
 
 //------------------------------------------------------------------------------
 void vtkApertureLightingMapper::BuildBufferObjects(vtkRenderer* renderer, vtkActor* actor)
 {
   this->BufferLayout = this->PackedLayout;
-  this->BufferTime = this->Lighting->GetShaderMTime();
+  this->BufferTime = this->Lighting->GetBufferMTime();
   const bool packed =
     this->PackedLayout > 0 && (this->State & Apertures) && !(this->State & PerTexel);
   if (!packed || !this->CurrentInput)

@@ -193,10 +193,11 @@ private:
   // Maps the aperture arrays (or texture coordinates) to vertex attributes when they change.
   void MapApertureAttributes(vtkPolyData* input);
   // The input with its horizons or masks packed (vtkApertureLightingInterface::PackAttributes()),
-  // remade when the input or the layout changes.
+  // remade when the input, the layout or what the interface's buffers depend on changes.
   vtkPolyData* GetPackedInput(vtkPolyData* input);
   vtkSmartPointer<vtkPolyData> PackedInput;
   vtkMTimeType PackedTime = 0;
+  vtkMTimeType PackedBufferTime = 0;
   int PackedInputLayout = 0;
   vtkPolyData* PackedSource = nullptr; // compared, never dereferenced
   int PackedLayout = 0;

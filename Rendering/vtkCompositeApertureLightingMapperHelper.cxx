@@ -74,6 +74,10 @@ void vtkCompositeApertureLightingMapperHelper::RenderPiece(vtkRenderer* renderer
     }
   }
   this->PackedLayout = this->Apertures ? this->PackedLayout : 0;
+  if (this->Lighting)
+  {
+    this->Lighting->UpdateVertexEnvironment(actor);
+  }
   this->Superclass::RenderPiece(renderer, actor);
 }
 
@@ -82,7 +86,8 @@ bool vtkCompositeApertureLightingMapperHelper::GetNeedToRebuildBufferObjects(
   vtkRenderer* renderer, vtkActor* actor)
 {
   return this->Superclass::GetNeedToRebuildBufferObjects(renderer, actor) ||
-    this->Apertures != this->BuffersHaveApertures || this->PackedLayout != this->BufferLayout;
+    this->Apertures != this->BuffersHaveApertures || this->PackedLayout != this->BufferLayout ||
+    (this->Lighting && this->BufferTime < this->Lighting->GetBufferMTime());
 }
 
 //------------------------------------------------------------------------------
@@ -91,6 +96,7 @@ void vtkCompositeApertureLightingMapperHelper::BuildBufferObjects(
 {
   this->BuffersHaveApertures = this->Apertures;
   this->BufferLayout = this->PackedLayout;
+  this->BufferTime = this->Lighting ? this->Lighting->GetBufferMTime() : 0;
   this->Superclass::BuildBufferObjects(renderer, actor);
 }
 

@@ -67,10 +67,12 @@ private:
 
   vtkSmartPointer<vtkApertureLightingInterface> Lighting;
   // Whether the vertex buffers hold aperture arrays, and whether this render shades with them;
-  // the same for packed horizons or masks (their layout, 0 for none).
+  // the same for packed horizons or masks (their layout, 0 for none), and the interface's buffer
+  // time they were built at.
   bool BuffersHaveApertures = false;
   bool Apertures = false;
   int BufferLayout = 0;
+  vtkMTimeType BufferTime = 0;
   int PackedLayout = 0;
   std::map<const vtkOpenGLHelper*, int> ShaderState;
 };

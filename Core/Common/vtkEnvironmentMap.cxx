@@ -693,6 +693,81 @@ vtkImageData* vtkEnvironmentMap::NewWedgeTable(
 }
 
 //------------------------------------------------------------------------------
+vtkImageData* vtkEnvironmentMap::NewMeanRadianceTable(int columns, int rows, double r)
+{
+  this->Update();
+  columns = std::max(1, columns);
+  rows = std::max(1, rows);
+  vtkImageData* table = vtkImageData::New();
+  table->SetDimensions(columns, rows, 1);
+  vtkNew<vtkFloatArray> values;
+  values->SetName("MeanRadiance");
+  values->SetNumberOfComponents(3);
+  values->SetNumberOfTuples(static_cast<vtkIdType>(columns) * rows);
+  values->Fill(0.0);
+  table->GetPointData()->SetScalars(values);
+  if (!this->Image || !(r >= 0.0))
+  {
+    return table;
+  }
+  const double cosR = std::cos(std::min(r, Pi));
+  const int w = WorkingWidth, h = WorkingHeight;
+  float* out = values->GetPointer(0);
+  vtkApertureSMP::For(0, static_cast<vtkIdType>(columns) * rows,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType t = first; t < last; ++t)
+      {
+        double a[3], sum[3] = { 0, 0, 0 }, area = 0.0;
+        Local((t % columns + 0.5) / columns, (t / columns + 0.5) / rows, a);
+        for (int p = 0; p < w * h; ++p)
+        {
+          if (vtkMath::Dot(a, &this->PixelDirections[3 * static_cast<size_t>(p)]) >= cosR)
+          {
+            const double solidAngle = this->RowSolidAngle[p / w];
+            for (int k = 0; k < 3; ++k)
+            {
+              sum[k] += this->Working[3 * static_cast<size_t>(p) + k] * solidAngle;
+            }
+            area += solidAngle;
+          }
+        }
+        double rgb[3];
+        if (area > 0.0)
+        {
+          for (int k = 0; k < 3; ++k)
+          {
+            rgb[k] = sum[k] / area;
+          }
+        }
+        else
+        {
+          // No pixel centre within the cap: the radiance at its axis.
+          SampleTable(this->Working.data(), w, h, a, rgb);
+        }
+        for (int k = 0; k < 3; ++k)
+        {
+          out[3 * t + k] = static_cast<float>(rgb[k]);
+        }
+      }
+    });
+  return table;
+}
+
+//------------------------------------------------------------------------------
+void vtkEnvironmentMap::SampleTable(
+  const float* table, int columns, int rows, const double local[3], double rgb[3])
+{
+  double u, v;
+  LocalToImagePoint(local, u, v);
+  for (int k = 0; k < 3; ++k)
+  {
+    auto at = [&](int i, int j) { return table[3 * (static_cast<size_t>(j) * columns + i) + k]; };
+    rgb[k] = SampleLatLong(at, columns, rows, u * columns - 0.5, v * rows - 0.5);
+  }
+}
+
+//------------------------------------------------------------------------------
 std::vector<double> vtkEnvironmentMap::WedgeBins(
   int azimuths, int elevations, const double toFrame[3][3])
 {

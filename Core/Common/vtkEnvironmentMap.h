@@ -186,6 +186,25 @@ public:
   vtkImageData* NewWedgeTable(int azimuths, int elevations, const double frameToWorld[9]);
 
   /**
+   * The environment blurred for cells of a visibility mask (vtkVisibilityMask::
+   * EnvironmentSkyTransfer()): a float RGB image of columns × rows points (`MeanRadiance`) whose
+   * point (i, j) holds the mean radiance over the cap of angular radius r around the axis at
+   * image point u = (i + ½)/columns, v = (j + ½)/rows, in the environment's own frame:
+   * CapRadiance() / (2π(1 − cos r)), the axis's own radiance for caps smaller than a pixel. The
+   * caller owns the image.
+   */
+  vtkImageData* NewMeanRadianceTable(int columns, int rows, double r);
+
+  /**
+   * A table of RGB floats of columns × rows points laid out as the environment's image (point
+   * (i, j) at u = (i + ½)/columns, v = (j + ½)/rows) sampled toward a unit direction of the
+   * environment's own frame as a shader samples its texture: bilinear, around the seam in
+   * azimuth, clamped at the poles.
+   */
+  static void SampleTable(
+    const float* table, int columns, int rows, const double local[3], double rgb[3]);
+
+  /**
    * The matrix (row-major 3 × 3) taking a world direction into the environment's own frame (x
    * north, y east, z up, unrotated), where (u, v) follow from the conventions:
    * φ = atan2(y, x), θ = asin(z).

@@ -11,6 +11,7 @@
 #include "vtkVisibilityMask.h"
 
 #include "vtkDataArray.h"
+#include "vtkEnvironmentMap.h"
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkSphericalCap.h"
@@ -314,6 +315,60 @@ double vtkVisibilityMask::SkyTransfer(const double normal[3], const unsigned cha
   OpenSums(mask, bits, open);
   return cosineWeighted ? std::max(0.0, open[1] - cosineCoverage) / Pi
                         : std::max(0.0, open[0] - coverage) / (2.0 * Pi);
+}
+
+//------------------------------------------------------------------------------
+double vtkVisibilityMask::CellCapRadius(int bits)
+{
+  return std::acos(1.0 - 1.0 / std::max(1, bits));
+}
+
+//------------------------------------------------------------------------------
+void vtkVisibilityMask::EnvironmentSkyTransfer(const double normal[3], const unsigned char* mask,
+  int bits, const float* table, int columns, int rows, const double toEnvironment[9],
+  double coverage, double cosineCoverage, bool cosineWeighted, double rgb[3])
+{
+  double n[3], t[3], b[3], open[2];
+  rgb[0] = rgb[1] = rgb[2] = 0.0;
+  const int side = GetSide(bits);
+  const double determinant = toEnvironment
+    ? vtkMath::Determinant3x3(toEnvironment, toEnvironment + 3, toEnvironment + 6)
+    : 0.0;
+  if (side == 0 || !mask || !table || columns < 1 || rows < 1 || std::isnan(coverage) ||
+    std::isnan(cosineCoverage) || !vtkSphericalCap::UnitAxis(normal, n) ||
+    !std::isfinite(determinant) || determinant == 0.0)
+  {
+    return;
+  }
+  Frame(n, t, b);
+  const std::vector<double>& cosines = CellCosines(side); // once: it takes a lock
+  for (int cell = 0; cell < bits; ++cell)
+  {
+    if (!IsOpen(mask, cell))
+    {
+      continue;
+    }
+    double w[3], local[3], radiance[3];
+    DirectionInFrame(t, b, n, (cell % side + 0.5) / side, (cell / side + 0.5) / side, w);
+    for (int i = 0; i < 3; ++i)
+    {
+      local[i] = vtkMath::Dot(toEnvironment + 3 * i, w);
+    }
+    vtkMath::Normalize(local);
+    vtkEnvironmentMap::SampleTable(table, columns, rows, local, radiance);
+    for (int k = 0; k < 3; ++k)
+    {
+      rgb[k] += radiance[k] * cosines[cell];
+    }
+  }
+  OpenSums(mask, bits, open);
+  const double all = cosineWeighted ? open[1] : open[0];
+  const double lost = cosineWeighted ? cosineCoverage : coverage;
+  const double share = all > 0.0 ? std::max(0.0, 1.0 - lost / all) : 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    rgb[k] = std::max(0.0, rgb[k]) * share / Pi;
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -38,6 +38,8 @@
  *   cosine-weighted (1/π)(Σ_open ∫_cell n·ω dω − the lights' cosine integrals), 1 for an open
  *   plane, or the open fraction (open cells / B − the lights' solid angle / 2π). The sums over
  *   the open cells do not depend on the lights (OpenSums()): shaders get them per point.
+ * - EnvironmentSkyTransfer(): an HDR environment through the open cells, each cell taking the
+ *   environment's mean radiance over a cap of its size about its middle direction.
  *
  * @sa vtkAperturePrecompute vtkHorizonLighting vtkSphericalCap
  */
@@ -130,6 +132,26 @@ public:
    */
   VTK_WRAPEXCLUDE static double SkyTransfer(const double n[3], const unsigned char* mask, int bits,
     double coverage, double cosineCoverage, bool cosineWeighted);
+
+  /**
+   * The angular radius of a cap of one cell's solid angle (2π/bits), over which
+   * EnvironmentSkyTransfer()'s environment is averaged.
+   */
+  static double CellCapRadius(int bits);
+
+  /**
+   * An environment sky through the open cells (RGB, as reflected radiance with albedo 1):
+   * (1/π) Σ_open L_c ∫_cell n·ω dω, L_c the environment's mean radiance over a cap about the
+   * cell's middle direction, read from a table (vtkEnvironmentMap::NewMeanRadianceTable(),
+   * columns × rows, sampled by vtkEnvironmentMap::SampleTable()) toward the middle turned into
+   * the environment's frame by toEnvironment (row-major 3 × 3, from the normal's frame: a
+   * rotation, uniform scales allowed); then scaled by the share of the open cells the lights
+   * leave (of their cosine integral, or of their solid angle without cosineWeighted). An
+   * environment of radiance 1 gives the cosine-weighted SkyTransfer(). Zeros for unusable input.
+   */
+  VTK_WRAPEXCLUDE static void EnvironmentSkyTransfer(const double n[3], const unsigned char* mask,
+    int bits, const float* table, int columns, int rows, const double toEnvironment[9],
+    double coverage, double cosineCoverage, bool cosineWeighted, double rgb[3]);
 
   ///@{
   /**

@@ -3,8 +3,8 @@
 // and VTK's lighting uniforms first, and these defines: APERTURE_SHADING and APERTURE_LAMBERT
 // (vtkSphericalCap's model and Lambert factor), APERTURE_LIGHT_COUNT, and optionally
 // APERTURE_PER_TEXEL (apertures from a texture), APERTURE_SKY_ENVIRONMENT (the sky from an
-// environment: through the cap, or with APERTURE_HORIZON_ENVIRONMENT through the horizons'
-// wedges), APERTURE_HORIZONS (lights and the uniform sky above per-sector horizons, with
+// environment: through the cap, or with APERTURE_OPEN_ENVIRONMENT through the horizons' wedges
+// or the masks' open cells), APERTURE_HORIZONS (lights and the uniform sky above per-sector horizons, with
 // vtkHorizonLightingGLSL first and apertureReadHorizons() written in at its mark below) and
 // APERTURE_VERTEX_LIGHTING (lights and the uniform sky evaluated per vertex, through visibility
 // masks or above horizons: apertureReadVertexLighting() at its mark below reads the interpolated
@@ -229,9 +229,9 @@ vec4 apertureEndFragment(apertureFragment f, vec3 ambientColor, vec3 diffuseColo
   if (f.aperture.radius >= 0.0)
   {
     float cosNormalBent = dot(f.normal, f.aperture.axis);
-#if defined(APERTURE_HORIZON_ENVIRONMENT) && defined(APERTURE_VERTEX_LIGHTING)
+#if defined(APERTURE_OPEN_ENVIRONMENT) && defined(APERTURE_VERTEX_LIGHTING)
     diffuse += apertureSkyColor * apertureVertexSky;
-#elif defined(APERTURE_HORIZON_ENVIRONMENT)
+#elif defined(APERTURE_OPEN_ENVIRONMENT)
     diffuse += apertureSkyColor *
       horizonLightingEnvironmentSky(
         f.normalModel, vec2(f.covered, f.coveredCosine), apertureSkyCosine != 0);

@@ -33,3 +33,13 @@ float apertureVertexSky()
     ? max(0.0, apertureVertexOpen.y - apertureVertexCoverage.y) / sphericalCapPi
     : max(0.0, apertureVertexOpen.x - apertureVertexCoverage.x) / (2.0 * sphericalCapPi);
 }
+
+// The environment sky through what the vertex sees, from the CPU without the lights
+// (EnvironmentSkyTransfer() of vtkVisibilityMask or vtkHorizonLighting), less the share of the
+// open sky the lights cover.
+vec3 apertureVertexEnvironmentSky(vec3 sky)
+{
+  float all = apertureSkyCosine != 0 ? apertureVertexOpen.y : apertureVertexOpen.x;
+  float lost = apertureSkyCosine != 0 ? apertureVertexCoverage.y : apertureVertexCoverage.x;
+  return all > 0.0 ? sky * max(0.0, 1.0 - lost / all) : vec3(0.0);
+}

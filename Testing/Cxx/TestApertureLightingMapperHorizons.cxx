@@ -21,6 +21,7 @@
 // SectorRotation), warn once and get the exact cap.
 
 #include "vtkApertureLightingMapper.h"
+#include "vtkApertureTestEnvironment.h"
 #include "vtkApertureTestHarness.h"
 #include "vtkCompositeApertureLightingMapper.h"
 #include "vtkEnvironmentMap.h"
@@ -168,26 +169,14 @@ struct Scene
 };
 
 // An environment whose red channel (the one the pixels are read from) is brightest low in the
-// north-east and dim to the south, and the wedge table of the model's frame (the world's here)
-// that the mapper builds from it.
+// north-east (vtkApertureTest::GlowSky()), and the wedge table of the model's frame (the world's
+// here) that the mapper builds from it.
 constexpr int WedgeAzimuths = 256;
 constexpr int WedgeElevations = 64;
 vtkSmartPointer<vtkEnvironmentMap> MakeEnvironment(std::vector<float>& wedges)
 {
-  vtkNew<vtkImageData> image;
-  image->SetDimensions(128, 64, 1);
-  vtkNew<vtkFloatArray> radiance;
-  radiance->SetNumberOfComponents(3);
-  radiance->SetNumberOfTuples(128 * 64);
-  for (vtkIdType p = 0; p < 128 * 64; ++p)
-  {
-    const double u = (p % 128 + 0.5) / 128, v = (p / 128 + 0.5) / 64;
-    const double glow = std::exp(-15.0 * ((u - 0.6) * (u - 0.6) + (v - 0.6) * (v - 0.6)));
-    radiance->SetTuple3(p, 0.3 + 0.4 * v + 2.0 * glow, 0.5, 0.5);
-  }
-  image->GetPointData()->SetScalars(radiance);
   auto environment = vtkSmartPointer<vtkEnvironmentMap>::New();
-  environment->SetImage(image);
+  environment->SetImage(vtkApertureTest::GlowSky());
   const double identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
   vtkSmartPointer<vtkImageData> table;
   table.TakeReference(environment->NewWedgeTable(WedgeAzimuths, WedgeElevations, identity));

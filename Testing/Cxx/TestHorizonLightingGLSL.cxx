@@ -14,6 +14,7 @@
 
 #include "vtkApertureGLSLEvaluator.h"
 #include "vtkApertureSkyTexture.h"
+#include "vtkApertureTestEnvironment.h"
 #include "vtkApertureTestHarness.h"
 #include "vtkEnvironmentMap.h"
 #include "vtkHorizonLighting.h"
@@ -145,25 +146,12 @@ std::vector<Case> MakeCases()
   return cases;
 }
 
-// A wedge table of a coloured environment, brightest near the horizon to the east, in the
-// horizons' frame (the world's).
+// A wedge table of a coloured environment (vtkApertureTest::GlowSky()) in the horizons' frame
+// (the world's).
 std::vector<float> MakeWedgeTable(vtkImageData* table)
 {
-  vtkNew<vtkImageData> image;
-  image->SetDimensions(128, 64, 1);
-  vtkNew<vtkFloatArray> radiance;
-  radiance->SetNumberOfComponents(3);
-  radiance->SetNumberOfTuples(128 * 64);
-  for (vtkIdType p = 0; p < 128 * 64; ++p)
-  {
-    const double u = (p % 128 + 0.5) / 128, v = (p / 128 + 0.5) / 64;
-    const double glow = std::exp(-20.0 * ((u - 0.75) * (u - 0.75) + (v - 0.55) * (v - 0.55)));
-    const double rgb[3] = { 0.2 + 5.0 * glow, 0.3 + v, 0.6 + 0.5 * v };
-    radiance->SetTuple(p, rgb);
-  }
-  image->GetPointData()->SetScalars(radiance);
   vtkNew<vtkEnvironmentMap> environment;
-  environment->SetImage(image);
+  environment->SetImage(vtkApertureTest::GlowSky());
   const double identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
   vtkSmartPointer<vtkImageData> wedges;
   wedges.TakeReference(environment->NewWedgeTable(Azimuths, Elevations, identity));
