@@ -609,6 +609,12 @@ bool vtkApertureLightingInterface::CheckApertureImage(vtkRenderer* renderer)
     this->Report(problem.str());
     return false;
   }
+  // Normals in the image decide where an environment sky per texel is computed.
+  if (this->HasTexelNormals() != this->TexelNormals)
+  {
+    this->TexelNormals = !this->TexelNormals;
+    this->ShaderTime.Modified();
+  }
   return this->CheckApertures(this->ApertureImage);
 }
 
@@ -820,7 +826,7 @@ void vtkApertureLightingInterface::PackAttributes(
   }
   if (this->SkyEnvironment)
   {
-    attributes.push_back(this->ComputeVertexEnvironment(data, layout, array));
+    attributes.push_back(this->ComputePointEnvironment(data, layout, array));
   }
 }
 
@@ -866,7 +872,7 @@ vtkMTimeType vtkApertureLightingInterface::GetBufferMTime() const
 }
 
 //------------------------------------------------------------------------------
-vtkSmartPointer<vtkFloatArray> vtkApertureLightingInterface::ComputeVertexEnvironment(
+vtkSmartPointer<vtkFloatArray> vtkApertureLightingInterface::ComputePointEnvironment(
   vtkDataSet* data, int layout, vtkDataArray* packed)
 {
   const vtkIdType n = data->GetNumberOfPoints();
@@ -1026,9 +1032,13 @@ std::string vtkApertureLightingInterface::GetFragmentDeclarations(
   {
     dec << "#define APERTURE_VERTEX_LIGHTING\n";
   }
-  // An environment sky comes through what horizons or masks leave open: per vertex, or per
-  // fragment above horizons.
-  if (this->SkyEnvironment && (perVertex || horizonSectors > 0))
+  // An environment sky comes through what horizons or masks leave open: per vertex, per texel
+  // from the CPU where the aperture image has normals, or per fragment above horizons.
+  if (this->SkyEnvironment && perTexel && horizonSectors > 0 && this->HasTexelNormals())
+  {
+    dec << "#define APERTURE_TEXEL_ENVIRONMENT\n";
+  }
+  else if (this->SkyEnvironment && (perVertex || horizonSectors > 0))
   {
     dec << "#define APERTURE_OPEN_ENVIRONMENT\n"
         << (horizonSectors > 0 ? "#define HORIZON_LIGHTING_ENVIRONMENT\n" : "");
@@ -1335,6 +1345,12 @@ void vtkApertureLightingInterface::SetTextureParameters(vtkShaderProgram* progra
     this->HorizonTexture->Activate();
     program->SetUniformi("apertureHorizonTexture", this->HorizonTexture->GetTextureUnit());
   }
+  if (program->IsUniformUsed("apertureSkyTexels") && this->ApertureImage &&
+    this->UploadSkyTexels(renderer))
+  {
+    this->SkyTexels->Activate();
+    program->SetUniformi("apertureSkyTexels", this->SkyTexels->GetTextureUnit());
+  }
   if (!program->IsUniformUsed("apertureTexture") || !this->ApertureImage)
   {
     return;
@@ -1517,6 +1533,62 @@ bool vtkApertureLightingInterface::UploadHorizonTexture(vtkRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
+bool vtkApertureLightingInterface::HasTexelNormals()
+{
+  vtkDataArray* normals =
+    this->ApertureImage ? this->ApertureImage->GetPointData()->GetNormals() : nullptr;
+  return normals && normals->GetNumberOfComponents() == 3 &&
+    normals->GetNumberOfTuples() == this->ApertureImage->GetNumberOfPoints();
+}
+
+//------------------------------------------------------------------------------
+bool vtkApertureLightingInterface::UploadSkyTexels(vtkRenderer* renderer)
+{
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  const int sectors = this->CheckHorizons(this->ApertureImage);
+  if (sectors < 1 || !this->SkyEnvironment || !this->HasTexelNormals())
+  {
+    return false;
+  }
+  vtkPointData* pd = this->ApertureImage->GetPointData();
+  vtkDataArray* horizons = pd->GetArray(this->HorizonAnglesArrayName.c_str());
+  const vtkMTimeType time = std::max({ this->ApertureImage->GetMTime(), horizons->GetMTime(),
+    pd->GetNormals()->GetMTime(), this->GetBufferMTime() });
+  if (this->SkyTexels && this->SkyTexels->GetContext() == window && this->SkyTexelsTime >= time &&
+    this->SkyTexelsSectors == sectors)
+  {
+    return true;
+  }
+  // Three floats a texel, filtered linearly as the horizons are.
+  vtkSmartPointer<vtkFloatArray> sky =
+    this->ComputePointEnvironment(this->ApertureImage, sectors, horizons);
+  std::vector<float> rgb(3 * static_cast<size_t>(sky->GetNumberOfTuples()));
+  for (vtkIdType t = 0; t < sky->GetNumberOfTuples(); ++t)
+  {
+    std::copy_n(sky->GetPointer(4 * t), 3, &rgb[3 * t]);
+  }
+  if (!this->SkyTexels)
+  {
+    this->SkyTexels = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  int dims[3];
+  this->ApertureImage->GetDimensions(dims);
+  this->SkyTexels->SetContext(window);
+  this->SkyTexels->SetWrapS(vtkTextureObject::ClampToEdge);
+  this->SkyTexels->SetWrapT(vtkTextureObject::ClampToEdge);
+  this->SkyTexels->SetMinificationFilter(vtkTextureObject::Linear);
+  this->SkyTexels->SetMagnificationFilter(vtkTextureObject::Linear);
+  if (!this->SkyTexels->Create2DFromRaw(dims[0], dims[1], 3, VTK_FLOAT, rgb.data()))
+  {
+    this->SkyTexelsTime = 0;
+    return false;
+  }
+  this->SkyTexelsTime = time;
+  this->SkyTexelsSectors = sectors;
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkApertureLightingInterface::UploadSkyTable(vtkRenderer* renderer)
 {
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
@@ -1587,6 +1659,10 @@ void vtkApertureLightingInterface::DeactivateTexture()
   {
     this->SkyWedges->Deactivate();
   }
+  if (this->SkyTexels)
+  {
+    this->SkyTexels->Deactivate();
+  }
   if (this->HorizonTexture)
   {
     this->HorizonTexture->Deactivate();
@@ -1610,6 +1686,11 @@ void vtkApertureLightingInterface::ReleaseGraphicsResources(vtkWindow* window)
   {
     this->SkyWedges->ReleaseGraphicsResources(window);
     this->SkyWedges = nullptr;
+  }
+  if (this->SkyTexels)
+  {
+    this->SkyTexels->ReleaseGraphicsResources(window);
+    this->SkyTexels = nullptr;
   }
   if (this->HorizonTexture)
   {

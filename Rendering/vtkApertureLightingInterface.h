@@ -145,9 +145,11 @@ public:
    * sky through the sectors' open wedges (or their open fraction without SkyCosineWeighting); an
    * environment sky comes through the same wedges (vtkHorizonLighting::EnvironmentSkyTransfer(),
    * from vtkEnvironmentMap::NewWedgeTable() in the model's frame: 256 azimuths × 64 elevations):
-   * per vertex computed on the CPU with the vertex buffers (PackAttributes()), per fragment by
-   * the fragment shader from the table as a 3D texture, built again only when the model turns
-   * against the environment.
+   * per vertex computed on the CPU with the vertex buffers (PackAttributes()), per texel on the
+   * CPU into a texture where the aperture image has point normals (the fragments take away the
+   * lights' share: vtkHorizonLighting::OpenShare()), otherwise per fragment by the fragment shader
+   * from the table as a 3D texture; computed again only when the model turns against the
+   * environment.
    */
   void SetHorizonAnglesArrayName(const char* name);
   vtkGetCharFromStdStringMacro(HorizonAnglesArrayName);
@@ -413,9 +415,16 @@ private:
   // when the environment's image changed or the model turned against it; false when OpenGL
   // cannot make it.
   bool UploadSkyWedges(vtkRenderer* renderer, vtkMatrix3x3* normalMatrix);
-  // The environment attribute of PackAttributes() for a dataset's points.
-  vtkSmartPointer<vtkFloatArray> ComputeVertexEnvironment(
+  // The environment sky through the horizons or masks (`packed`, resampled to `layout`) of a
+  // dataset's points, without the lights, RGB and a spare float a point: PackAttributes()'s last
+  // attribute for vertices, UploadSkyTexels()'s texels for the aperture image.
+  vtkSmartPointer<vtkFloatArray> ComputePointEnvironment(
     vtkDataSet* data, int layout, vtkDataArray* packed);
+  // Whether the aperture image has point normals, for an environment sky per texel from the CPU.
+  bool HasTexelNormals();
+  // Computes and uploads that sky, as a 2D texture of the image's size, when the image, its
+  // horizons or normals, or the environment changed; false when it cannot.
+  bool UploadSkyTexels(vtkRenderer* renderer);
 
   vtkTimeStamp ShaderTime;
   vtkSmartPointer<vtkTextureObject> Texture;
@@ -439,6 +448,10 @@ private:
   double SkyWedgesFrame[9] = { 0, 0, 0, 0, 0, 0, 0, 0, 0 };
   // UpdateVertexEnvironment()'s model to world, and what the environment attribute depends on.
   double VertexModelToWorld[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+  vtkSmartPointer<vtkTextureObject> SkyTexels;
+  bool TexelNormals = false; // HasTexelNormals() when the shaders were last asked for
+  vtkMTimeType SkyTexelsTime = 0;
+  int SkyTexelsSectors = 0;
   std::vector<double> VertexEnvironmentKey;
   vtkTimeStamp VertexEnvironmentTime;
   std::string LastProblem;

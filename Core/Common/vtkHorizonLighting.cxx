@@ -260,14 +260,27 @@ void vtkHorizonLighting::EnvironmentSkyTransfer(const double normal[3], const fl
     AddWedgeTable(table, azimuths, elevations, (k + 1) * width, e, n, 1.0, rgb);
     AddWedgeTable(table, azimuths, elevations, k * width, e, n, -1.0, rgb);
   }
-  OpenSums(n, horizons, sectors, open);
-  const double all = cosineWeighted ? open[1] : open[0];
-  const double lost = cosineWeighted ? cosineCoverage : coverage;
-  const double share = all > 0.0 ? std::max(0.0, 1.0 - lost / all) : 0.0;
+  const double share = OpenShare(n, horizons, sectors, coverage, cosineCoverage, cosineWeighted);
   for (int k = 0; k < 3; ++k)
   {
     rgb[k] = std::max(0.0, rgb[k]) * share / Pi;
   }
+}
+
+//------------------------------------------------------------------------------
+double vtkHorizonLighting::OpenShare(const double normal[3], const float* horizons, int sectors,
+  double coverage, double cosineCoverage, bool cosineWeighted)
+{
+  double n[3], open[2];
+  if (sectors < 1 || !horizons || std::isnan(coverage) || std::isnan(cosineCoverage) ||
+    !vtkSphericalCap::UnitAxis(normal, n))
+  {
+    return 0.0;
+  }
+  OpenSums(n, horizons, sectors, open);
+  const double all = cosineWeighted ? open[1] : open[0];
+  const double lost = cosineWeighted ? cosineCoverage : coverage;
+  return all > 0.0 ? std::max(0.0, 1.0 - lost / all) : 0.0;
 }
 
 //------------------------------------------------------------------------------

@@ -131,6 +131,15 @@ public:
     double cosineCoverage, bool cosineWeighted, double rgb[3]);
 
   /**
+   * The share of the open wedges the lights leave: 1 − their cosine integrals over the wedges'
+   * (or their solid angles over the wedges' without cosineWeighted), in [0, 1]; 0 where nothing
+   * is open or for unusable input. EnvironmentSkyTransfer() scales by it, and so do the shaders
+   * that take an environment sky computed without the lights.
+   */
+  VTK_WRAPEXCLUDE static double OpenShare(const double n[3], const float* horizons, int sectors,
+    double coverage, double cosineCoverage, bool cosineWeighted);
+
+  /**
    * The open wedges' solid angle (sums[0]) and ∫ n·ω dω over them (sums[1]), which do not
    * depend on the lights (the mappers pack them per vertex); zeros for unusable input.
    */

@@ -4,7 +4,8 @@
 // (vtkSphericalCap's model and Lambert factor), APERTURE_LIGHT_COUNT, and optionally
 // APERTURE_PER_TEXEL (apertures from a texture), APERTURE_SKY_ENVIRONMENT (the sky from an
 // environment: through the cap, or with APERTURE_OPEN_ENVIRONMENT through the horizons' wedges
-// or the masks' open cells), APERTURE_HORIZONS (lights and the uniform sky above per-sector horizons, with
+// or the masks' open cells, with APERTURE_TEXEL_ENVIRONMENT from a texture of it per texel),
+// APERTURE_HORIZONS (lights and the uniform sky above per-sector horizons, with
 // vtkHorizonLightingGLSL first and apertureReadHorizons() written in at its mark below) and
 // APERTURE_VERTEX_LIGHTING (lights and the uniform sky evaluated per vertex, through visibility
 // masks or above horizons: apertureReadVertexLighting() at its mark below reads the interpolated
@@ -33,6 +34,11 @@ in vec2 apertureUVVSOutput;
 #else
 in vec3 bentNormalVCVSOutput;
 in float apertureRadiusVSOutput;
+#endif
+
+#ifdef APERTURE_TEXEL_ENVIRONMENT
+// The environment sky through each texel's open wedges, without the lights (from the CPU).
+uniform sampler2D apertureSkyTexels;
 #endif
 
 #ifdef APERTURE_HORIZONS
@@ -231,6 +237,10 @@ vec4 apertureEndFragment(apertureFragment f, vec3 ambientColor, vec3 diffuseColo
     float cosNormalBent = dot(f.normal, f.aperture.axis);
 #if defined(APERTURE_OPEN_ENVIRONMENT) && defined(APERTURE_VERTEX_LIGHTING)
     diffuse += apertureSkyColor * apertureVertexSky;
+#elif defined(APERTURE_TEXEL_ENVIRONMENT)
+    diffuse += apertureSkyColor * texture(apertureSkyTexels, apertureUVVSOutput).rgb *
+      horizonLightingOpenShare(
+        f.normalModel, vec2(f.covered, f.coveredCosine), apertureSkyCosine != 0);
 #elif defined(APERTURE_OPEN_ENVIRONMENT)
     diffuse += apertureSkyColor *
       horizonLightingEnvironmentSky(

@@ -185,6 +185,15 @@ float horizonLightingSkyTransfer(
                         : max(0.0, open - coverage.x) / (2.0 * sphericalCapPi);
 }
 
+// vtkHorizonLighting::OpenShare(): the share of the open wedges the lights leave.
+float horizonLightingOpenShare(vec3 n, vec2 coverage, bool cosineWeighted)
+{
+  float all = cosineWeighted ? horizonLightingSkyTransfer(n, vec2(0.0), true) * sphericalCapPi
+                             : horizonLightingSkyTransfer(n, vec2(0.0), false) * 2.0 * sphericalCapPi;
+  float lost = cosineWeighted ? coverage.y : coverage.x;
+  return all > 0.0 && !any(isnan(coverage)) ? max(0.0, 1.0 - lost / all) : 0.0;
+}
+
 #ifdef HORIZON_LIGHTING_ENVIRONMENT
 // vtkEnvironmentMap::NewWedgeTable() in the horizons' frame: azimuths + 1 columns, elevations
 // rows, the three axes as layers, filtered linearly.
@@ -220,10 +229,6 @@ vec3 horizonLightingEnvironmentSky(vec3 n, vec2 coverage, bool cosineWeighted)
     float e = horizonLightingWedgeFloor(n, horizonLightingHorizons[k], vec2(cos(middle), sin(middle))).x;
     sum += horizonLightingWedgeAt(n, float(k + 1) * width, e) - horizonLightingWedgeAt(n, float(k) * width, e);
   }
-  float all = cosineWeighted ? horizonLightingSkyTransfer(n, vec2(0.0), true) * sphericalCapPi
-                             : horizonLightingSkyTransfer(n, vec2(0.0), false) * 2.0 * sphericalCapPi;
-  float lost = cosineWeighted ? coverage.y : coverage.x;
-  float share = all > 0.0 ? max(0.0, 1.0 - lost / all) : 0.0;
-  return max(sum, vec3(0.0)) * share / sphericalCapPi;
+  return max(sum, vec3(0.0)) * horizonLightingOpenShare(n, coverage, cosineWeighted) / sphericalCapPi;
 }
 #endif

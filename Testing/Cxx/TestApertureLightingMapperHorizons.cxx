@@ -185,10 +185,19 @@ vtkSmartPointer<vtkEnvironmentMap> MakeEnvironment(std::vector<float>& wedges)
   return environment;
 }
 
+// What an environment sky is expected from: the wedge table the mapper builds, and the aperture
+// image's normal where it has normals (the sky per texel then comes from the CPU around it, and
+// the fragment only takes away the lights' share).
+struct SkyExpectation
+{
+  std::vector<float> Wedges;
+  const double* TexelNormal = nullptr;
+};
+
 // The expected 0..1 value at world position p of a quad with these horizons (as the GPU sees
 // them), or of the exact cap where `cap` is set.
 double Expected(const Scene& s, const double n[3], const std::vector<float>& h, const double p[3],
-  double intensity, bool cap, const std::vector<float>& wedges)
+  double intensity, bool cap, const SkyExpectation& expectation)
 {
   double l[3] = { s.Light[0], s.Light[1], s.Light[2] };
   double rl = s.Radius;
@@ -210,10 +219,17 @@ double Expected(const Scene& s, const double n[3], const std::vector<float>& h, 
   const double t =
     vtkHorizonLighting::LightTransfer(n, h.data(), sectors, l, rl, &coverage, &cosine);
   double sky[3] = { vtkHorizonLighting::SkyTransfer(n, h.data(), sectors, coverage, cosine, true) };
-  if (s.Environment)
+  const float* wedges = expectation.Wedges.data();
+  if (s.Environment && expectation.TexelNormal)
   {
-    vtkHorizonLighting::EnvironmentSkyTransfer(n, h.data(), sectors, wedges.data(), WedgeAzimuths,
-      WedgeElevations, coverage, cosine, true, sky);
+    vtkHorizonLighting::EnvironmentSkyTransfer(expectation.TexelNormal, h.data(), sectors, wedges,
+      WedgeAzimuths, WedgeElevations, 0.0, 0.0, true, sky);
+    sky[0] *= vtkHorizonLighting::OpenShare(n, h.data(), sectors, coverage, cosine, true);
+  }
+  else if (s.Environment)
+  {
+    vtkHorizonLighting::EnvironmentSkyTransfer(
+      n, h.data(), sectors, wedges, WedgeAzimuths, WedgeElevations, coverage, cosine, true, sky);
   }
   return std::min(1.0, intensity * t + s.Sky * sky[0]);
 }
@@ -274,7 +290,7 @@ public:
         for (int c = 0; c < 4; ++c)
         {
           const double p[3] = { x0 + Size * offsets[c][0], y0 + Size * offsets[c][1], 0.0 };
-          corner[c] = Expected(s, q.Normal, h, p, this->Intensity, cap, this->Wedges);
+          corner[c] = Expected(s, q.Normal, h, p, this->Intensity, cap, this->Sky);
         }
         for (int py = Size * j + 3; py < Size * (j + 1) - 3; py += 4)
         {
@@ -288,7 +304,7 @@ public:
               : (1.0 - v) * corner[0] + u * corner[2] + (v - u) * corner[3];
             const double want = 255.0 *
               (perVertex ? interpolated
-                         : Expected(s, q.Normal, h, p, this->Intensity, cap, this->Wedges));
+                         : Expected(s, q.Normal, h, p, this->Intensity, cap, this->Sky));
             const double d = std::abs(pixels->GetValue(3 * (px + Side * py)) - want);
             worst = std::max(worst, d);
           }
@@ -299,8 +315,8 @@ public:
   }
 
   const double Intensity = 0.8;
-  std::vector<float> Wedges;
-  vtkSmartPointer<vtkEnvironmentMap> Environment = MakeEnvironment(this->Wedges);
+  SkyExpectation Sky;
+  vtkSmartPointer<vtkEnvironmentMap> Environment = MakeEnvironment(this->Sky.Wedges);
   vtkNew<vtkApertureLightingMapper> Mapper;
   vtkNew<vtkActor> Actor;
   vtkNew<vtkRenderer> Renderer;
@@ -492,6 +508,32 @@ void TestPerTexel(Bench& bench)
       worst <= 1.0, "Horizon pixels per texel differ from vtkHorizonLighting (/255)", worst, 1.0);
   }
   Check(!bench.Observer->GetWarning(), "good horizons in an image shade without a warning");
+  // With normals in the image, the environment sky per texel comes from the CPU around them.
+  vtkNew<vtkFloatArray> up;
+  up->SetNumberOfComponents(3);
+  up->SetNumberOfTuples(16);
+  const double tilted[3] = { 0.2, -0.1, 0.97 };
+  for (vtkIdType t = 0; t < 16; ++t)
+  {
+    up->SetTuple(t, tilted);
+  }
+  image->GetPointData()->SetNormals(up);
+  image->Modified();
+  bench.Sky.TexelNormal = tilted;
+  for (const Scene& s : Scenes())
+  {
+    if (!s.Environment)
+    {
+      continue;
+    }
+    const double worst = bench.Run(s, quads, 32, false, false);
+    std::cout << "per texel with normals, " << (s.Positional ? "sphere light R=" : "sun r=")
+              << s.Radius << ", sky " << s.Sky << " (environment): max |GPU - CPU| = " << worst
+              << "/255\n";
+    Check(worst <= 1.0, "Horizon pixels per texel with an environment from the CPU differ (/255)",
+      worst, 1.0);
+  }
+  bench.Sky.TexelNormal = nullptr;
   bench.Mapper->SetApertureImage(nullptr);
 }
 }
