@@ -194,8 +194,9 @@ struct SkyExpectation
   const double* TexelNormal = nullptr;
 };
 
-// The expected 0..1 value at world position p of a quad with these horizons (as the GPU sees
-// them), or of the exact cap where `cap` is set.
+// The expected value at world position p of a quad with these horizons (as the GPU sees them),
+// or of the exact cap where `cap` is set; unclamped, as the vertex shader hands it on (the
+// fragments clamp what they interpolate).
 double Expected(const Scene& s, const double n[3], const std::vector<float>& h, const double p[3],
   double intensity, bool cap, const SkyExpectation& expectation)
 {
@@ -211,8 +212,7 @@ double Expected(const Scene& s, const double n[3], const std::vector<float>& h, 
     const double t = vtkSphericalCap::LightTransfer(
       vtkSphericalCap::EXACT, vtkSphericalCap::CENTROID, n, n, 1.0, l, rl);
     const double covered = vtkSphericalCap::LightCoverage(vtkSphericalCap::EXACT, n, 1.0, l, rl);
-    return std::min(
-      1.0, intensity * t + s.Sky * vtkSphericalCap::SkyTransfer(1.0, covered, 1.0, true));
+    return intensity * t + s.Sky * vtkSphericalCap::SkyTransfer(1.0, covered, 1.0, true);
   }
   const int sectors = static_cast<int>(h.size());
   double coverage, cosine;
@@ -231,7 +231,7 @@ double Expected(const Scene& s, const double n[3], const std::vector<float>& h, 
     vtkHorizonLighting::EnvironmentSkyTransfer(
       n, h.data(), sectors, wedges, WedgeAzimuths, WedgeElevations, coverage, cosine, true, sky);
   }
-  return std::min(1.0, intensity * t + s.Sky * sky[0]);
+  return intensity * t + s.Sky * sky[0];
 }
 
 class Bench
@@ -303,8 +303,9 @@ public:
               ? (1.0 - u) * corner[0] + (u - v) * corner[1] + v * corner[2]
               : (1.0 - v) * corner[0] + u * corner[2] + (v - u) * corner[3];
             const double want = 255.0 *
-              (perVertex ? interpolated
-                         : Expected(s, q.Normal, h, p, this->Intensity, cap, this->Sky));
+              std::min(1.0,
+                perVertex ? interpolated
+                          : Expected(s, q.Normal, h, p, this->Intensity, cap, this->Sky));
             const double d = std::abs(pixels->GetValue(3 * (px + Side * py)) - want);
             worst = std::max(worst, d);
           }
