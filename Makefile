@@ -140,7 +140,8 @@ paraview-test: paraview
 # Every process keeps its libraries loaded (Testing/Sanitizers/keep-loaded.c), and leaks reported
 # in the system's OpenGL and X libraries, and in VTK 9.1's failure paths, are suppressed
 # (Testing/Sanitizers/lsan.supp); any other report fails. A test that fails only because
-# LeakSanitizer's own tracer crashed at exit runs once more (Testing/Sanitizers/ctest_sanitized.py);
+# LeakSanitizer's own tracer crashed at exit runs twice more, then once without the leak check
+# if that crash ends every run (Testing/Sanitizers/ctest_sanitized.py, which says so);
 # the command-line tests, which run their tool a hundred times, rerun such a run of it instead
 # (Examples/ApertureRender/Testing/tool_run.py).
 # The shared libraries do not export their std template instances
