@@ -184,20 +184,28 @@ void TestUniform()
   std::cout << "radiance 1: max |environment - uniform sky| = " << worst << "\n";
 }
 
-// A smooth coloured environment, turned about another axis than the frame's, against brute force.
-void TestSmooth()
+// The smooth sky, turned about the y axis by 35 degrees, and a frame turned 0.8 rad about
+// (1, 2, 3) against the world: the two tests of a turned sky share them.
+vtkSmartPointer<vtkEnvironmentMap> TurnedSmoothSky(double rotation[3][3])
 {
-  vtkNew<vtkEnvironmentMap> environment;
+  auto environment = vtkSmartPointer<vtkEnvironmentMap>::New();
   environment->SetImage(LatLong(512, 256, SmoothSky));
   environment->SetUpAxisToY();
   environment->SetAzimuth(35.0);
-  // The frame: turned 0.8 rad about (1, 2, 3) and scaled by 2.
   double axis[3] = { 1.0, 2.0, 3.0 };
   vtkMath::Normalize(axis);
   double quaternion[4] = { std::cos(0.4), std::sin(0.4) * axis[0], std::sin(0.4) * axis[1],
     std::sin(0.4) * axis[2] };
-  double rotation[3][3];
   vtkMath::QuaternionToMatrix3x3(quaternion, rotation);
+  return environment;
+}
+
+// A smooth coloured environment, turned about another axis than the frame's, against brute force.
+void TestSmooth()
+{
+  // The frame: turned, and scaled by 2.
+  double rotation[3][3];
+  vtkSmartPointer<vtkEnvironmentMap> environment = TurnedSmoothSky(rotation);
   double frame[9], unit[9];
   for (int i = 0; i < 9; ++i)
   {
@@ -330,17 +338,9 @@ void TestMasks()
   vtkNew<vtkEnvironmentMap> uniform;
   uniform->SetImage(
     LatLong(64, 32, [](const double*, double rgb[3]) { rgb[0] = rgb[1] = rgb[2] = 1.0; }));
-  vtkNew<vtkEnvironmentMap> smooth;
-  smooth->SetImage(LatLong(512, 256, SmoothSky));
-  smooth->SetUpAxisToY();
-  smooth->SetAzimuth(35.0);
-  // Model to environment: turned 0.8 rad about (1, 2, 3), scaled by 2, then the sky's frame.
-  double axis[3] = { 1.0, 2.0, 3.0 };
-  vtkMath::Normalize(axis);
-  double quaternion[4] = { std::cos(0.4), std::sin(0.4) * axis[0], std::sin(0.4) * axis[1],
-    std::sin(0.4) * axis[2] };
+  // Model to environment: turned, scaled by 2, then the sky's frame.
   double rotation[3][3], toSky[3][3], toEnvironment[3][3], unit[9], scaled[9];
-  vtkMath::QuaternionToMatrix3x3(quaternion, rotation);
+  vtkSmartPointer<vtkEnvironmentMap> smooth = TurnedSmoothSky(rotation);
   smooth->GetWorldToEnvironment(&toSky[0][0]);
   vtkMath::Multiply3x3(toSky, rotation, toEnvironment);
   for (int i = 0; i < 9; ++i)
