@@ -10,7 +10,6 @@
 =========================================================================*/
 #include "vtkHorizonApertures.h"
 
-#include "vtkApertureMemory.h"
 #include "vtkSphericalCap.h"
 
 #include "vtkApertureSMP.h"
@@ -23,7 +22,6 @@
 #include <cstring>
 #include <initializer_list>
 #include <limits>
-#include <memory>
 #include <new>
 #include <vector>
 
@@ -783,60 +781,58 @@ void SweepSector(
     });
 }
 
-// The horizons of a few passes, a plane per sector, before they go to the per-texel records
-// together: writing each pass's two sectors straight into records of S floats would touch
-// every texel's cache line on every pass (1.5 times the sweep's time at 32 sectors, against
-// 1.35 with 8 planes, 32 bytes a texel besides the output, flushed every 4 passes).
-class HorizonPlanes
+// The horizons, while the sweeps write them, in the output array itself but sector-major
+// within blocks of BlockTexels texels: a pass then writes whole cache lines of its sectors in
+// the order it visits texels, where records of S floats would have each pass touch every
+// record's lines (1.5 times the sweep's time at 32 sectors), and no buffer besides the output
+// is needed. Transpose() turns each block into records when the sweeps are done.
+class HorizonBlocks
 {
 public:
-  static constexpr int PassesPerFlush = 4;
+  static constexpr vtkIdType BlockTexels = 1024;
 
-  HorizonPlanes(float* horizons, vtkIdType texels, int sectors)
+  HorizonBlocks(float* horizons, vtkIdType texels, int sectors)
     : Horizons(horizons)
     , Texels(texels)
     , NumberOfSectors(sectors)
   {
-    if (horizons)
-    {
-      // Written before read: no need to clear them.
-      const size_t size = 2 * PassesPerFlush * static_cast<size_t>(texels);
-      this->Data.reset(new float[size]);
-      vtkApertureMemory::AdviseHugePages(this->Data.get(), sizeof(float) * size);
-    }
   }
 
-  // Where pass `pass`'s sector k (0, or 1 for the opposite one) goes: a plane, or null.
-  float* Plane(int pass, int k)
+  bool IsWanted() const { return this->Horizons != nullptr; }
+
+  // Where texel o's horizon in sector k goes until Transpose().
+  float& At(vtkIdType o, int k) const
   {
-    return !this->Data ? nullptr : &this->Data[(2 * (pass % PassesPerFlush) + k) * this->Texels];
+    const vtkIdType first = o - o % BlockTexels;
+    const vtkIdType size = std::min(BlockTexels, this->Texels - first);
+    return this->Horizons[first * this->NumberOfSectors + k * size + (o - first)];
   }
 
-  // Moves the buffered planes of passes [first, first + count) into the records.
-  void Flush(const Lines* lines, int count)
+  // Each block from sector-major to records of NumberOfSectors floats.
+  void Transpose() const
   {
-    if (!this->Data)
+    if (!this->Horizons)
     {
       return;
     }
-    std::vector<std::pair<const float*, int>> sources; // plane, sector
-    for (int p = 0; p < count; ++p)
-    {
-      for (int k = 0; k < lines[p].Count; ++k)
-      {
-        sources.emplace_back(&this->Data[(2 * p + k) * this->Texels], lines[p].Index[k]);
-      }
-    }
-    // Texel by texel, so that each record is written once per flush.
-    vtkApertureSMP::For(0, this->Texels,
+    const vtkIdType blocks = (this->Texels + BlockTexels - 1) / BlockTexels;
+    const int sectors = this->NumberOfSectors;
+    vtkApertureSMP::For(0, blocks,
       [&](vtkIdType begin, vtkIdType end)
       {
-        for (vtkIdType o = begin; o < end; ++o)
+        std::vector<float> copy(BlockTexels * sectors);
+        for (vtkIdType b = begin; b < end; ++b)
         {
-          float* record = this->Horizons + o * this->NumberOfSectors;
-          for (const auto& source : sources)
+          const vtkIdType first = b * BlockTexels;
+          const vtkIdType size = std::min(BlockTexels, this->Texels - first);
+          float* block = this->Horizons + first * sectors;
+          std::copy(block, block + size * sectors, copy.data());
+          for (vtkIdType t = 0; t < size; ++t)
           {
-            record[source.second] = source.first[o];
+            for (int k = 0; k < sectors; ++k)
+            {
+              block[t * sectors + k] = copy[k * size + t];
+            }
           }
         }
       });
@@ -846,7 +842,6 @@ private:
   float* Horizons;
   vtkIdType Texels;
   int NumberOfSectors;
-  std::unique_ptr<float[]> Data;
 };
 
 // Whether any terrain product is asked for; whether one needs the negated heights' sweeps.
@@ -857,18 +852,18 @@ bool WantsProducts(const vtkHorizonApertures::Buffers& out)
 }
 
 // The per-texel deficit sums, in the output arrays until Finish() turns them into outputs; the
-// horizons into their planes. The products' sums likewise: the sky's deficit (solid angle, and
+// horizons into their blocks. The products' sums likewise: the sky's deficit (solid angle, and
 // its projection on the normal), and Σ (π/2 − h) over the sectors with samples, counted in
 // `Sampled`.
 class Accumulator
 {
 public:
   Accumulator(const Lines& lines, const vtkHorizonApertures::Buffers& out,
-    const NormalStore& normals, float* planes[2], unsigned short* sampled)
+    const NormalStore& normals, const HorizonBlocks& horizons, unsigned short* sampled)
     : Normals(normals)
     , L(lines)
     , Out(out)
-    , Planes{ planes[0], planes[1] }
+    , Horizons(horizons)
     , Sampled(sampled)
   {
   }
@@ -896,9 +891,10 @@ private:
       const double top = std::max(slopes[k], tangent);
       const double cosA = 1.0 / std::sqrt(1.0 + top * top), a = FastAtan(top);
       Deficit(sector.Dphi, sector.Chord, a, top * cosA, cosA, deficit);
-      if (this->Planes[k])
+      if (this->Horizons.IsWanted())
       {
-        this->Planes[k][o] = static_cast<float>(slopes[k] >= tangent ? a : FastAtan(slopes[k]));
+        this->Horizons.At(o, this->L.Index[k]) =
+          static_cast<float>(slopes[k] >= tangent ? a : FastAtan(slopes[k]));
       }
     }
     this->Out.ApertureRadius[o] += static_cast<float>(deficit[0]);
@@ -950,7 +946,7 @@ private:
   const NormalStore& Normals;
   const Lines& L;
   const vtkHorizonApertures::Buffers& Out;
-  float* const Planes[2];
+  const HorizonBlocks& Horizons;
   unsigned short* const Sampled;
 };
 
@@ -1089,25 +1085,19 @@ bool vtkHorizonApertures::Compute(const Grid& grid, const Buffers& output, std::
   // Opposite sectors share their lines: one pass gathers and scatters both.
   const bool paired = grid.Sectors % 2 == 0;
   const int passes = paired ? grid.Sectors / 2 : grid.Sectors;
-  HorizonPlanes planes(output.Horizons, texels, grid.Sectors);
-  std::vector<Lines> buffered;
+  const HorizonBlocks horizons(output.Horizons, texels, grid.Sectors);
   for (int pass = 0; pass < passes; ++pass)
   {
-    buffered.emplace_back(f, grid, pass, paired);
-    float* toPlanes[2] = { planes.Plane(pass, 0), planes.Plane(pass, 1) };
-    SweepSector(f, buffered.back(), normals, output.NegativeOpenness != nullptr,
-      Accumulator(buffered.back(), output, normals, toPlanes, products ? sampled.data() : nullptr));
-    if (buffered.size() == HorizonPlanes::PassesPerFlush || pass + 1 == passes)
-    {
-      planes.Flush(buffered.data(), static_cast<int>(buffered.size()));
-      buffered.clear();
-    }
+    const Lines lines(f, grid, pass, paired);
+    SweepSector(f, lines, normals, output.NegativeOpenness != nullptr,
+      Accumulator(lines, output, normals, horizons, products ? sampled.data() : nullptr));
     if (progress && !progress(double(pass + 1) / passes))
     {
       error = "The computation was aborted.";
       return false;
     }
   }
+  horizons.Transpose();
   Finish(output, normals, texels, grid.Sectors, products ? sampled.data() : nullptr);
   return true;
 }

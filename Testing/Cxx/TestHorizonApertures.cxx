@@ -756,6 +756,41 @@ void TestSpeed()
 }
 }
 
+// 10. The horizons kept by Compute() (written sector-major in blocks of texels, then turned
+// into records) against each sector swept alone, on a grid of several blocks and a part one,
+// paired and unpaired sectors, with no-data texels (closed: π/2).
+void TestKeptHorizons()
+{
+  Terrain t = Rough(53, 47, 1.0, 1.0);
+  t.Valid.assign(t.Z.size(), 1);
+  std::fill(t.Valid.begin() + 20 * 53 + 5, t.Valid.begin() + 20 * 53 + 9, 0);
+  for (const int sectors : { 15, 16 })
+  {
+    const vtkHorizonApertures::Grid g = t.Grid(sectors, 12.0);
+    const vtkIdType texels = 53 * 47;
+    std::vector<float> bent(3 * texels), radius(texels), normals(3 * texels);
+    std::vector<float> horizons(sectors * texels);
+    std::vector<unsigned char> valid(texels);
+    vtkHorizonApertures::Buffers out{ bent.data(), radius.data(), nullptr, normals.data(),
+      valid.data(), horizons.data() };
+    std::string error;
+    Check(vtkHorizonApertures::Compute(g, out, error), "kept horizons: " + error);
+    double worst = 0.0;
+    for (int sector = 0; sector < sectors; ++sector)
+    {
+      std::vector<float> alone;
+      Check(vtkHorizonApertures::ComputeHorizons(g, sector, alone, error), "horizons: " + error);
+      for (vtkIdType o = 0; o < texels; ++o)
+      {
+        const double kept = horizons[o * sectors + sector];
+        worst = std::max(worst, std::abs(kept - (valid[o] ? alone[o] : 0.5 * Pi)));
+      }
+    }
+    Check(worst <= 1e-6, "kept horizons, D = " + std::to_string(sectors) + ", as swept alone",
+      worst, 1e-6);
+  }
+}
+
 int TestHorizonApertures(int, char*[])
 {
   TestSectorFormulas();
@@ -770,6 +805,7 @@ int TestHorizonApertures(int, char*[])
   TestAgainstMarching(1.0, 0.8, VTK_DOUBLE_MAX, 0, 0, 16, 4.0);
   TestAgainstMarching(1.3, 1.0, 7.5, 1000, 20, 15, 4.0);
   TestAgainstMarching(1.0, 1.0, VTK_DOUBLE_MAX, 0, 0, 16, 0.0);
+  TestKeptHorizons();
   TestFailures();
   TestSpeed();
   return vtkApertureTest::Result();
