@@ -785,12 +785,13 @@ void SweepSector(
 // within blocks of BlockTexels texels: a pass then writes whole cache lines of its sectors in
 // the order it visits texels, where records of S floats would have each pass touch every
 // record's lines (1.5 times the sweep's time at 32 sectors), and no buffer besides the output
-// is needed. Transpose() turns each block into records when the sweeps are done.
+// is needed. Transpose() turns each block into records when the sweeps are done. (A namespace
+// constant, not a static member: std::min odr-uses it, which C++14 would leave undefined.)
+constexpr vtkIdType BlockTexels = 1024;
+
 class HorizonBlocks
 {
 public:
-  static constexpr vtkIdType BlockTexels = 1024;
-
   HorizonBlocks(float* horizons, vtkIdType texels, int sectors)
     : Horizons(horizons)
     , Texels(texels)
