@@ -10,6 +10,7 @@
 =========================================================================*/
 #include "vtkVolumeAperturePrecompute.h"
 
+#include "vtkApertureSMP.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -17,7 +18,6 @@
 #include "vtkMatrix3x3.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
-#include "vtkApertureSMP.h"
 #include "vtkSphericalCap.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkVolumeExtinction.h"
@@ -60,8 +60,8 @@ std::vector<double> FibonacciDirections(int n)
 class ApertureSweeps
 {
 public:
-  ApertureSweeps(std::vector<float> sigma, const int dims[3], const double spacing[3],
-    double falloff)
+  ApertureSweeps(
+    std::vector<float> sigma, const int dims[3], const double spacing[3], double falloff)
     : Sigma(std::move(sigma))
     , Falloff(falloff)
   {
@@ -78,8 +78,8 @@ public:
   // Carries τ along `omega` (unit, image axes) through every slice, adding T and T ω to the sums.
   void Sweep(const double omega[3]);
 
-  void Write(vtkImageData* output, const int outExt[6], const int region[6],
-    vtkMatrix3x3* rotation, int directions) const;
+  void Write(vtkImageData* output, const int outExt[6], const int region[6], vtkMatrix3x3* rotation,
+    int directions) const;
 
   std::vector<float> Open; // Σ T
   std::vector<float> Bent; // Σ T ω
@@ -138,8 +138,7 @@ void ApertureSweeps::Sweep(const double omega[3])
   const Layout l = this->MakeLayout(omega);
   const size_t slice = size_t(this->Dims[l.A] + 2 * Pad) * (this->Dims[l.B] + 2 * Pad);
   // Outside is empty: no σ, and light passes (E = 1).
-  std::vector<float> prevS(slice, 0.0f), prevE(slice, 1.0f), curS(slice, 0.0f),
-    curE(slice, 1.0f);
+  std::vector<float> prevS(slice, 0.0f), prevE(slice, 1.0f), curS(slice, 0.0f), curE(slice, 1.0f);
   const int n = this->Dims[l.M];
   // The ray's next slice must be done first: sweep against the direction.
   for (int i = 0; i < n; ++i)
@@ -167,33 +166,35 @@ void ApertureSweeps::SweepSlice(const Layout& l, int k, const double omega[3],
   const float wy = static_cast<float>(omega[1]);
   const float wz = static_cast<float>(omega[2]);
   const vtkIdType base = k * this->Strides[l.M];
-  vtkApertureSMP::For(0, nb, [&](int beginB, int endB) {
-    for (int ib = beginB; ib < endB; ++ib)
+  vtkApertureSMP::For(0, nb,
+    [&](int beginB, int endB)
     {
-      // The ray's next point in the previous slice, (ia + da, ib + db), padded.
-      const size_t q = size_t(ib + l.OffsetB + Pad) * row + l.OffsetA + Pad;
-      const size_t p = size_t(ib + Pad) * row + Pad;
-      vtkIdType voxel = base + ib * this->Strides[l.B];
-      for (int ia = 0; ia < na; ++ia, voxel += this->Strides[l.A])
+      for (int ib = beginB; ib < endB; ++ib)
       {
-        const size_t qa = q + ia;
-        const float sq =
-          w00 * prevS[qa] + w10 * prevS[qa + 1] + w01 * prevS[qa + row] + w11 * prevS[qa + row + 1];
-        const float eq =
-          w00 * prevE[qa] + w10 * prevE[qa + 1] + w01 * prevE[qa + row] + w11 * prevE[qa + row + 1];
-        // E = exp(-F), F(p) = sum over j >= 1 of c^j σ(p + jδω) δ, whose first term counts
-        // half in τ: the trapezoid rule from the next slice on.
-        const float next = std::exp(-l.Decay * half * sq);
-        const float t = next * std::pow(eq, l.Decay);
-        curS[p + ia] = this->Sigma[voxel];
-        curE[p + ia] = next * t;
-        this->Open[voxel] += t;
-        this->Bent[3 * voxel] += t * wx;
-        this->Bent[3 * voxel + 1] += t * wy;
-        this->Bent[3 * voxel + 2] += t * wz;
+        // The ray's next point in the previous slice, (ia + da, ib + db), padded.
+        const size_t q = size_t(ib + l.OffsetB + Pad) * row + l.OffsetA + Pad;
+        const size_t p = size_t(ib + Pad) * row + Pad;
+        vtkIdType voxel = base + ib * this->Strides[l.B];
+        for (int ia = 0; ia < na; ++ia, voxel += this->Strides[l.A])
+        {
+          const size_t qa = q + ia;
+          const float sq = w00 * prevS[qa] + w10 * prevS[qa + 1] + w01 * prevS[qa + row] +
+            w11 * prevS[qa + row + 1];
+          const float eq = w00 * prevE[qa] + w10 * prevE[qa + 1] + w01 * prevE[qa + row] +
+            w11 * prevE[qa + row + 1];
+          // E = exp(-F), F(p) = sum over j >= 1 of c^j σ(p + jδω) δ, whose first term counts
+          // half in τ: the trapezoid rule from the next slice on.
+          const float next = std::exp(-l.Decay * half * sq);
+          const float t = next * std::pow(eq, l.Decay);
+          curS[p + ia] = this->Sigma[voxel];
+          curE[p + ia] = next * t;
+          this->Open[voxel] += t;
+          this->Bent[3 * voxel] += t * wx;
+          this->Bent[3 * voxel + 1] += t * wy;
+          this->Bent[3 * voxel + 2] += t * wz;
+        }
       }
-    }
-  });
+    });
 }
 
 // Adds BentNormal and ApertureRadius over `outExt` (within `region`, the sweeps' grid) to
@@ -213,35 +214,38 @@ void ApertureSweeps::Write(vtkImageData* output, const int outExt[6], const int 
   const double cell = 4.0 * Pi / directions;
   const int outDims[3] = { outExt[1] - outExt[0] + 1, outExt[3] - outExt[2] + 1,
     outExt[5] - outExt[4] + 1 };
-  vtkApertureSMP::For(0, count, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
+  vtkApertureSMP::For(0, count,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      const int ijk[3] = { static_cast<int>(i % outDims[0]),
-        static_cast<int>((i / outDims[0]) % outDims[1]),
-        static_cast<int>(i / (vtkIdType(outDims[0]) * outDims[1])) };
-      vtkIdType v = 0;
-      for (int a = 2; a >= 0; --a)
+      for (vtkIdType i = begin; i < end; ++i)
       {
-        v = v * this->Dims[a] + (outExt[2 * a] + ijk[a] - region[2 * a]);
+        const int ijk[3] = { static_cast<int>(i % outDims[0]),
+          static_cast<int>((i / outDims[0]) % outDims[1]),
+          static_cast<int>(i / (vtkIdType(outDims[0]) * outDims[1])) };
+        vtkIdType v = 0;
+        for (int a = 2; a >= 0; --a)
+        {
+          v = v * this->Dims[a] + (outExt[2 * a] + ijk[a] - region[2 * a]);
+        }
+        const double open = this->Open[v];
+        double b[3] = { this->Bent[3 * v], this->Bent[3 * v + 1], this->Bent[3 * v + 2] };
+        double length = std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+        if (!(length > 1e-4 * open) || !(length > 0.0))
+        {
+          b[0] = b[1] = 0.0;
+          b[2] = length = 1.0;
+        }
+        double world[3];
+        const double unit[3] = { b[0] / length, b[1] / length, b[2] / length };
+        rotation->MultiplyPoint(unit, world);
+        bent->SetTypedTuple(i,
+          std::array<float, 3>{ static_cast<float>(world[0]), static_cast<float>(world[1]),
+            static_cast<float>(world[2]) }
+            .data());
+        const double solid = std::min(open * cell, 4.0 * Pi);
+        radius->SetValue(i, static_cast<float>(vtkSphericalCap::CapRadiusFromSolidAngle(solid)));
       }
-      const double open = this->Open[v];
-      double b[3] = { this->Bent[3 * v], this->Bent[3 * v + 1], this->Bent[3 * v + 2] };
-      double length = std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
-      if (!(length > 1e-4 * open) || !(length > 0.0))
-      {
-        b[0] = b[1] = 0.0;
-        b[2] = length = 1.0;
-      }
-      double world[3];
-      const double unit[3] = { b[0] / length, b[1] / length, b[2] / length };
-      rotation->MultiplyPoint(unit, world);
-      bent->SetTypedTuple(i, std::array<float, 3>{ static_cast<float>(world[0]),
-                               static_cast<float>(world[1]), static_cast<float>(world[2]) }
-                               .data());
-      const double solid = std::min(open * cell, 4.0 * Pi);
-      radius->SetValue(i, static_cast<float>(vtkSphericalCap::CapRadiusFromSolidAngle(solid)));
-    }
-  });
+    });
   output->GetPointData()->AddArray(bent);
   output->GetPointData()->AddArray(radius);
 }
@@ -314,6 +318,27 @@ int vtkVolumeAperturePrecompute::RequestInformation(
 }
 
 //------------------------------------------------------------------------------
+void vtkVolumeAperturePrecompute::ComputeHalo(
+  const int wholeExtent[6], const double spacing[3], int halo[3]) const
+{
+  double bounds[6];
+  for (int a = 0; a < 3; ++a)
+  {
+    bounds[2 * a] = wholeExtent[2 * a] * spacing[a];
+    bounds[2 * a + 1] = wholeExtent[2 * a + 1] * spacing[a];
+  }
+  const double distance = HaloPerDistance * this->GetEffectiveMaximumDistance(bounds);
+  for (int a = 0; a < 3; ++a)
+  {
+    // Bad spacings are RequestData's to refuse; here they only must not overflow.
+    const double span = wholeExtent[2 * a + 1] - wholeExtent[2 * a];
+    const double cells = spacing[a] > 0.0 ? std::ceil(distance / spacing[a]) : span;
+    halo[a] = static_cast<int>(std::min(std::isfinite(cells) ? cells : span, std::max(span, 0.0))) +
+      this->ApertureGridStep;
+  }
+}
+
+//------------------------------------------------------------------------------
 int vtkVolumeAperturePrecompute::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -327,23 +352,14 @@ int vtkVolumeAperturePrecompute::RequestUpdateExtent(
   {
     inInfo->Get(vtkDataObject::SPACING(), spacing);
   }
-  double bounds[6];
-  for (int a = 0; a < 3; ++a)
-  {
-    bounds[2 * a] = whole[2 * a] * spacing[a];
-    bounds[2 * a + 1] = whole[2 * a + 1] * spacing[a];
-  }
-  const double halo = HaloPerDistance * this->GetEffectiveMaximumDistance(bounds);
+  int halo[3];
+  this->ComputeHalo(whole, spacing, halo);
   const int step = this->ApertureGridStep;
   int request[6];
   for (int a = 0; a < 3; ++a)
   {
-    // Bad spacings are RequestData's to refuse; here they only must not overflow.
-    const double span = whole[2 * a + 1] - whole[2 * a];
-    const double cells = spacing[a] > 0.0 ? std::ceil(halo / spacing[a]) : span;
-    const int grow = static_cast<int>(std::min(std::isfinite(cells) ? cells : span, span)) + step;
-    request[2 * a] = std::max(whole[2 * a], update[2 * a] * step - grow);
-    request[2 * a + 1] = std::min(whole[2 * a + 1], update[2 * a + 1] * step + grow);
+    request[2 * a] = std::max(whole[2 * a], update[2 * a] * step - halo[a]);
+    request[2 * a + 1] = std::min(whole[2 * a + 1], update[2 * a + 1] * step + halo[a]);
   }
   inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), request, 6);
   return 1;

@@ -25,8 +25,8 @@
  *
  * where T(ω) = exp(−τ(ω)) is the transmittance from the voxel's centre along ω. Where
  * ∫ T ω dω is shorter than 1e-4 of A (free space, a voxel inside a closed shell), the bent normal
- * is the image's third axis (its direction matrix's +k): any direction is then right. On the input's
- * grid the output keeps every input array.
+ * is the image's third axis (its direction matrix's +k): any direction is then right. On the
+ * input's grid the output keeps every input array.
  *
  * What a ray sees: τ(ω) = ∫ σ(x + sω) e^{−s/λ} ds from s = δ on, σ trilinear: the ray starts
  * where it reaches the next slice of the aperture grid across it (δ, one to √3 voxels; see
@@ -37,12 +37,12 @@
  *
  * How: for each of NumberOfDirections directions (a spherical Fibonacci set, equal solid angles,
  * the same for every voxel), one sweep of the aperture grid slice by slice against the direction
- * carries the transmittance from each slice to the next (the step δ crosses one slice), interpolating
- * it bilinearly within the slice: every voxel's T costs two bilinear samples, whatever
- * MaximumDistance is. Interpolating T rather than τ keeps openings open: a ray beside an opaque
- * wall gets the average of its neighbours' light, not the light through their average depth. A coarser aperture grid
- * first averages σ with a tent filter, which keeps the optical depth of thin walls. Time and
- * error against vtkVolumeApertureReference: BenchmarkVolumeAperture.
+ * carries the transmittance from each slice to the next (the step δ crosses one slice),
+ * interpolating it bilinearly within the slice: every voxel's T costs two bilinear samples,
+ * whatever MaximumDistance is. Interpolating T rather than τ keeps openings open: a ray beside an
+ * opaque wall gets the average of its neighbours' light, not the light through their average depth.
+ * A coarser aperture grid first averages σ with a tent filter, which keeps the optical depth of
+ * thin walls. Time and error against vtkVolumeApertureReference: BenchmarkVolumeAperture.
  *
  * Streaming: the filter produces any sub-extent of its output and asks for the input around it
  * grown by a halo of 1.5 MaximumDistance (rays farther out count less than e^-4.5), so that
@@ -108,6 +108,13 @@ public:
    * The distance actually used for an input of these bounds (MaximumDistance or its default).
    */
   double GetEffectiveMaximumDistance(const double bounds[6]) const;
+
+  /**
+   * How many input voxels a piece of the output needs on each side along each axis (its halo,
+   * and one step of the aperture grid), for an input of this whole extent and spacing: what a
+   * pipeline that hands out pieces with ghost levels (ParaView's) asks its source for.
+   */
+  void ComputeHalo(const int wholeExtent[6], const double spacing[3], int halo[3]) const;
 
   /**
    * Includes the volume property's time.

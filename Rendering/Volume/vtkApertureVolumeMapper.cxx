@@ -15,6 +15,7 @@
 #include "vtkDataArray.h"
 #include "vtkEnvironmentMap.h"
 #include "vtkImageData.h"
+#include "vtkInformation.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
@@ -27,7 +28,9 @@
 #include "vtkShaderProperty.h"
 #include "vtkSphericalCap.h"
 #include "vtkSphericalCapGLSL.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTextureObject.h"
+#include "vtkTrivialProducer.h"
 #include "vtkUniforms.h"
 #include "vtkVolume.h"
 #include "vtkVolumeAperturePrecompute.h"
@@ -40,6 +43,7 @@
 
 vtkStandardNewMacro(vtkApertureVolumeMapper);
 vtkCxxSetObjectMacro(vtkApertureVolumeMapper, ApertureData, vtkImageData);
+vtkCxxSetObjectMacro(vtkApertureVolumeMapper, ApertureSource, vtkImageData);
 vtkCxxSetObjectMacro(vtkApertureVolumeMapper, SkyEnvironment, vtkEnvironmentMap);
 
 namespace
@@ -58,9 +62,11 @@ unsigned char ToByte(double unit)
   return static_cast<unsigned char>(std::lround(std::min(1.0, std::max(0.0, unit)) * 255.0));
 }
 
-// The step (a whole number of input voxels) of an aperture grid along each axis, or false when
-// `apertures` is not a grid of every n-th voxel of `input` with the two arrays.
-bool ApertureGridSteps(vtkImageData* input, vtkImageData* apertures, int steps[3])
+// The step (a whole number of input voxels) of an aperture grid along each axis and where the
+// input's first voxel lies from the grid's first point (in input voxels, |offset| < step), or
+// false when `apertures` is not a grid of every n-th voxel of `input` with the two arrays that
+// covers it to within a step.
+bool ApertureGridSteps(vtkImageData* input, vtkImageData* apertures, int steps[3], int offsets[3])
 {
   vtkDataArray* bent = apertures->GetPointData()->GetArray("BentNormal");
   vtkDataArray* radius = apertures->GetPointData()->GetArray("ApertureRadius");
@@ -83,10 +89,13 @@ bool ApertureGridSteps(vtkImageData* input, vtkImageData* apertures, int steps[3
   {
     const double ratio = a[i] / s[i];
     steps[i] = static_cast<int>(std::lround(ratio));
-    const double start = o[i] + e[2 * i] * s[i];
-    const double apertureStart = p[i] + f[2 * i] * a[i];
-    if (steps[i] < 1 || std::abs(ratio - steps[i]) > 1e-3 ||
-      std::abs(start - apertureStart) > 1e-3 * s[i] || m[i] != (n[i] - 1) / steps[i] + 1)
+    // The first and last points of each, in input voxels from the aperture grid's first.
+    const double start = (o[i] + e[2 * i] * s[i] - (p[i] + f[2 * i] * a[i])) / s[i];
+    const double end = start + (n[i] - 1);
+    const double last = (m[i] - 1) * ratio;
+    offsets[i] = static_cast<int>(std::lround(start));
+    if (steps[i] < 1 || std::abs(ratio - steps[i]) > 1e-3 || std::abs(start - offsets[i]) > 1e-3 ||
+      start <= -steps[i] || end >= last + steps[i])
     {
       return false;
     }
@@ -102,6 +111,7 @@ vtkApertureVolumeMapper::vtkApertureVolumeMapper() = default;
 vtkApertureVolumeMapper::~vtkApertureVolumeMapper()
 {
   this->SetApertureData(nullptr);
+  this->SetApertureSource(nullptr);
   this->SetSkyEnvironment(nullptr);
 }
 
@@ -156,31 +166,10 @@ std::string vtkApertureVolumeMapper::Unusable(vtkVolume* vol)
 vtkImageData* vtkApertureVolumeMapper::CurrentApertures(vtkVolume* vol)
 {
   vtkImageData* input = vtkImageData::SafeDownCast(this->GetInput());
-  vtkImageData* apertures = this->ApertureData;
-  if (!apertures)
-  {
-    vtkVolumeAperturePrecompute* precompute = this->GetAperturePrecompute();
-    precompute->SetInputData(input);
-    precompute->SetVolumeProperty(vol->GetProperty());
-    int cellFlag = 0;
-    vtkDataArray* scalars = this->GetScalars(
-      input, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
-    if (scalars->GetName())
-    {
-      precompute->SetInputArrayToProcess(
-        0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, scalars->GetName());
-    }
-    // A failed precompute runs again at every Update: try once per change of what it reads.
-    const vtkMTimeType changed = std::max(precompute->GetMTime(), input->GetMTime());
-    if (changed > this->PrecomputeTried)
-    {
-      this->PrecomputeTried = changed;
-      precompute->Update();
-    }
-    apertures = precompute->GetOutput();
-  }
-  int steps[3];
-  if (!ApertureGridSteps(input, apertures, steps))
+  vtkImageData* apertures =
+    this->ApertureData ? this->ApertureData : this->ComputedApertures(vol, input);
+  int steps[3], offsets[3];
+  if (!ApertureGridSteps(input, apertures, steps, offsets))
   {
     this->WarnOnce("no apertures on every n-th voxel of the input, with BentNormal (3 "
                    "components) and ApertureRadius");
@@ -191,13 +180,70 @@ vtkImageData* vtkApertureVolumeMapper::CurrentApertures(vtkVolume* vol)
   apertures->GetDimensions(m);
   for (int a = 0; a < 3; ++a)
   {
-    // Point p of the input sits at texture coordinate (p + 1/2)/n, aperture point p/step at
-    // (p/step + 1/2)/m.
+    // Point p of the input sits at texture coordinate (p + 1/2)/n, aperture point
+    // (p + offset)/step at ((p + offset)/step + 1/2)/m.
     this->TextureScale[a] = static_cast<float>(n[a] / (double(steps[a]) * m[a]));
-    this->TextureShift[a] = static_cast<float>((0.5 - 0.5 / steps[a]) / m[a]);
+    this->TextureShift[a] = static_cast<float>((0.5 + (offsets[a] - 0.5) / steps[a]) / m[a]);
     this->GridSize[a] = static_cast<float>(m[a]);
   }
   return apertures;
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkApertureVolumeMapper::ComputedApertures(vtkVolume* vol, vtkImageData* input)
+{
+  vtkVolumeAperturePrecompute* precompute = this->GetAperturePrecompute();
+  if (!this->PrecomputeInput)
+  {
+    this->PrecomputeInput = vtkSmartPointer<vtkTrivialProducer>::New();
+  }
+  vtkImageData* source = this->ApertureSource ? this->ApertureSource : input;
+  this->PrecomputeInput->SetOutput(source);
+  if (this->ApertureSource)
+  {
+    this->PrecomputeInput->SetWholeExtent(this->ApertureSourceWholeExtent);
+  }
+  else
+  {
+    this->PrecomputeInput->SetWholeExtent(0, -1, 0, -1, 0, -1);
+  }
+  precompute->SetInputConnection(this->PrecomputeInput->GetOutputPort());
+  precompute->SetVolumeProperty(vol->GetProperty());
+  int cellFlag = 0;
+  vtkDataArray* scalars = this->GetScalars(
+    input, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
+  if (scalars->GetName())
+  {
+    precompute->SetInputArrayToProcess(
+      0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, scalars->GetName());
+  }
+  // A failed precompute runs again at every Update: try once per change of what it reads.
+  const vtkMTimeType changed =
+    std::max({ precompute->GetMTime(), this->PrecomputeInput->GetMTime(), source->GetMTime() });
+  if (changed > this->PrecomputeTried)
+  {
+    this->PrecomputeTried = changed;
+    // Only the aperture grid's points over the input (and one beyond where it ends between two).
+    const int step = precompute->GetApertureGridStep();
+    int extent[6];
+    input->GetExtent(extent);
+    for (int a = 0; a < 3; ++a)
+    {
+      extent[2 * a] = static_cast<int>(std::floor(extent[2 * a] / double(step)));
+      extent[2 * a + 1] = static_cast<int>(std::ceil(extent[2 * a + 1] / double(step)));
+    }
+    precompute->UpdateInformation();
+    int whole[6];
+    precompute->GetOutputInformation(0)->Get(
+      vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
+    for (int a = 0; a < 3; ++a)
+    {
+      extent[2 * a] = std::max(extent[2 * a], whole[2 * a]);
+      extent[2 * a + 1] = std::min(extent[2 * a + 1], whole[2 * a + 1]);
+    }
+    precompute->UpdateExtent(extent);
+  }
+  return precompute->GetOutput();
 }
 
 //------------------------------------------------------------------------------
@@ -455,5 +501,12 @@ void vtkApertureVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
      << this->SkyColor[2] << ")\n";
   os << indent << "SkyEnvironment: " << this->SkyEnvironment << "\n";
   os << indent << "ApertureData: " << this->ApertureData << "\n";
+  os << indent << "ApertureSource: " << this->ApertureSource << "\n";
+  os << indent << "ApertureSourceWholeExtent: (" << this->ApertureSourceWholeExtent[0];
+  for (int i = 1; i < 6; ++i)
+  {
+    os << ", " << this->ApertureSourceWholeExtent[i];
+  }
+  os << ")\n";
   os << indent << "AperturePrecompute: " << this->Precompute.Get() << "\n";
 }

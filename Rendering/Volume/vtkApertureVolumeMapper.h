@@ -59,6 +59,7 @@ class vtkEnvironmentMap;
 class vtkImageData;
 class vtkOpenGLShaderProperty;
 class vtkTextureObject;
+class vtkTrivialProducer;
 class vtkVolumeAperturePrecompute;
 
 class VTKAPERTURELIGHTINGRENDERINGVOLUME_EXPORT vtkApertureVolumeMapper
@@ -122,6 +123,21 @@ public:
   vtkGetObjectMacro(ApertureData, vtkImageData);
   ///@}
 
+  ///@{
+  /**
+   * A larger volume that the input is a piece of, to compute the apertures from (the piece and a
+   * halo of vtkVolumeAperturePrecompute::ComputeHalo() voxels around it, on the same grid), and
+   * that volume's whole extent, which sets the default MaximumDistance: occluders in the halo
+   * then shade the piece as they would the whole volume. Pieces handed out by MPI ranks or
+   * streaming need it. nullptr (the default): the apertures of the input alone. An empty whole
+   * extent (the default) takes the source's own.
+   */
+  void SetApertureSource(vtkImageData* volume);
+  vtkGetObjectMacro(ApertureSource, vtkImageData);
+  vtkSetVector6Macro(ApertureSourceWholeExtent, int);
+  vtkGetVector6Macro(ApertureSourceWholeExtent, int);
+  ///@}
+
   /**
    * The precompute the mapper runs when no aperture data is set: its MaximumDistance,
    * NumberOfDirections and ApertureGridStep are the mapper's.
@@ -140,6 +156,8 @@ protected:
   double LightRadius = 0.1;
   double SkyColor[3] = { 1.0, 1.0, 1.0 };
   vtkImageData* ApertureData = nullptr;
+  vtkImageData* ApertureSource = nullptr;
+  int ApertureSourceWholeExtent[6] = { 0, -1, 0, -1, 0, -1 };
   vtkEnvironmentMap* SkyEnvironment = nullptr;
 
 private:
@@ -151,6 +169,8 @@ private:
   std::string Unusable(vtkVolume* vol);
   // The apertures to draw with, computed when needed; nullptr with a warning when unusable.
   vtkImageData* CurrentApertures(vtkVolume* vol);
+  // The precompute's apertures over the input, from the aperture source or the input.
+  vtkImageData* ComputedApertures(vtkVolume* vol, vtkImageData* input);
   bool UploadApertures(vtkRenderer* ren, vtkImageData* apertures);
   // The environment's cap-radiance table as a 3D texture, made again when its image changes.
   bool UploadSkyTable(vtkRenderer* ren);
@@ -162,6 +182,7 @@ private:
   void WarnOnce(const std::string& problem);
 
   vtkSmartPointer<vtkVolumeAperturePrecompute> Precompute;
+  vtkSmartPointer<vtkTrivialProducer> PrecomputeInput;
   vtkSmartPointer<vtkTextureObject> Texture;
   vtkSmartPointer<vtkTextureObject> SkyTable;
   vtkMTimeType SkyTableTime = 0;
