@@ -63,7 +63,7 @@ unsigned char ToByte(double unit)
 }
 
 // The step (a whole number of input voxels) of an aperture grid along each axis and where the
-// input's first voxel lies from the grid's first point (in input voxels, |offset| < step), or
+// input's first voxel lies from the grid's first point (in input voxels, above -step), or
 // false when `apertures` is not a grid of every n-th voxel of `input` with the two arrays that
 // covers it to within a step.
 bool ApertureGridSteps(vtkImageData* input, vtkImageData* apertures, int steps[3], int offsets[3])
