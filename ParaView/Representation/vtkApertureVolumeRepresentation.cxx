@@ -12,10 +12,16 @@
 
 #include "vtkApertureSkyFile.h"
 #include "vtkApertureVolumeMapper.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkVolumeAperturePrecompute.h"
 #include "vtkVolumeProperty.h"
+
+#include <algorithm>
 
 vtkStandardNewMacro(vtkApertureVolumeRepresentation);
 
@@ -46,6 +52,59 @@ void vtkApertureVolumeRepresentation::UpdateMapperParameters()
 {
   this->Superclass::UpdateMapperParameters();
   this->Property->ShadeOn();
+}
+
+//------------------------------------------------------------------------------
+int vtkApertureVolumeRepresentation::RequestUpdateExtent(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (!this->Superclass::RequestUpdateExtent(request, inputVector, outputVector))
+  {
+    return 0;
+  }
+  // The superclass asks for no ghost levels; a piece's apertures need the halo's occluders.
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  for (int i = 0; i < inputVector[0]->GetNumberOfInformationObjects(); ++i)
+  {
+    vtkInformation* info = inputVector[0]->GetInformationObject(i);
+    if (info->Get(SDDP::UPDATE_NUMBER_OF_PIECES()) > 1 && info->Has(SDDP::WHOLE_EXTENT()))
+    {
+      int whole[6];
+      info->Get(SDDP::WHOLE_EXTENT(), whole);
+      double spacing[3] = { 1.0, 1.0, 1.0 };
+      if (info->Has(vtkDataObject::SPACING()))
+      {
+        info->Get(vtkDataObject::SPACING(), spacing);
+      }
+      int halo[3];
+      this->GetApertureVolumeMapper()->GetAperturePrecompute()->ComputeHalo(whole, spacing, halo);
+      info->Set(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS(), std::max({ halo[0], halo[1], halo[2] }));
+    }
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkApertureVolumeRepresentation::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // The superclass draws the piece without its ghosts; the apertures see them.
+  vtkSmartPointer<vtkImageData> source;
+  int whole[6] = { 0, -1, 0, -1, 0, -1 };
+  if (inputVector[0]->GetNumberOfInformationObjects() == 1)
+  {
+    vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
+    if (input && input->HasAnyGhostCells())
+    {
+      source = vtkSmartPointer<vtkImageData>::New();
+      source->ShallowCopy(input);
+      inputVector[0]->GetInformationObject(0)->Get(
+        vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
+    }
+  }
+  this->GetApertureVolumeMapper()->SetApertureSource(source);
+  this->GetApertureVolumeMapper()->SetApertureSourceWholeExtent(whole);
+  return this->Superclass::RequestData(request, inputVector, outputVector);
 }
 
 //------------------------------------------------------------------------------

@@ -15,17 +15,20 @@
  * ParaView's image volume representation drawn by vtkApertureVolumeMapper instead of its own
  * volume mapper: every sample is shaded by its voxel's aperture against ParaView's lights (each
  * an area light of the angular size set here) and a sky of the Sky Color times the Lighting
- * group's Ambient, as VTK's volume ambient is: uniform, or an HDR environment from a file. The apertures are computed from the
- * volume's transfer function when it is drawn first and again after the opacity changes (the
- * mapper's vtkVolumeAperturePrecompute, with the distance, directions and grid step set here).
- * Colour and opacity transfer functions, blending, cropping and the rest work as for "Volume".
+ * group's Ambient, as VTK's volume ambient is: uniform, or an HDR environment from a file. The
+ * apertures are computed from the volume's transfer function when it is drawn first and again after
+ * the opacity changes (the mapper's vtkVolumeAperturePrecompute, with the distance, directions and
+ * grid step set here). Colour and opacity transfer functions, blending, cropping and the rest work
+ * as for "Volume".
  *
  * The volume samples as the Volume representation does for a still frame (at a distance locked to
  * the input's spacing), also while the view is being turned.
  *
  * The apertures are the shading, so the volume is always shaded (ParaView's Shade is not read).
- * In parallel each rank computes the apertures of its own piece: occluders on other ranks cast
- * no shadow.
+ * In parallel each rank asks for its piece with as many ghost levels as the apertures' halo
+ * (vtkVolumeAperturePrecompute::ComputeHalo()) and computes its piece's apertures from them, so
+ * that occluders on other ranks' pieces shade it as in a serial run; the volume drawn is the
+ * piece without its ghosts, as for "Volume".
  */
 
 #ifndef vtkApertureVolumeRepresentation_h
@@ -100,6 +103,8 @@ protected:
   ~vtkApertureVolumeRepresentation() override;
 
   void UpdateMapperParameters() override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
 private:
   std::unique_ptr<vtkApertureSkyFile> Sky;

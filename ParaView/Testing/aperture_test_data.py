@@ -122,17 +122,19 @@ WELL = {"dimensions": (64, 48, 24), "centre": (40.0, 24.0), "floor": 4.0, "top":
         "radius": 4.0, "ring": 14.0, "block": 100.0, "ring_value": 200.0}
 
 
-def write_well_volume(path):
-    """A .vti volume of unit voxels: a block (value 100) under z = top with a round well down to
-    z = floor, its wall a ring (value 200) out to the ring radius, empty (0) elsewhere. The
+# A deeper well in a taller volume, for pieces split along z: its floor below the middle, its
+# walls above (no ring).
+DEEP_WELL = {"dimensions": (48, 48, 80), "centre": (24.0, 24.0), "floor": 34.0, "top": 57.0,
+             "radius": 6.0, "ring": 6.0, "block": 100.0, "ring_value": 100.0}
+
+
+def write_well_volume(path, s=WELL):
+    """A .vti volume of unit voxels of the well s: a block (value 100) under z = top with a round
+    well down to z = floor, its wall a ring (value 200) out to the ring radius, empty (0) elsewhere. The
     well's floor sees the sky within atan(radius / depth) of the zenith; with the ring
     transparent, within atan(ring / depth)."""
-    from vtkmodules.vtkCommonDataModel import vtkImageData
-    from vtkmodules.vtkIOXML import vtkXMLImageDataWriter
-    from vtkmodules.util.numpy_support import numpy_to_vtk
     import numpy as np
 
-    s = WELL
     nx, ny, nz = s["dimensions"]
     z, y, x = np.mgrid[0:nz, 0:ny, 0:nx].astype(float)
     rho = np.hypot(x - s["centre"][0], y - s["centre"][1])
@@ -140,8 +142,18 @@ def write_well_volume(path):
     shaft = (z >= s["floor"]) & (z < s["top"])
     values[shaft & (rho < s["ring"])] = s["ring_value"]
     values[shaft & (rho < s["radius"])] = 0.0
+    write_volume(path, values)
+
+
+def write_volume(path, values):
+    """A .vti volume of unit voxels from a (z, y, x) array, its scalars named density."""
+    from vtkmodules.vtkCommonDataModel import vtkImageData
+    from vtkmodules.vtkIOXML import vtkXMLImageDataWriter
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    import numpy as np
+
     image = vtkImageData()
-    image.SetDimensions(nx, ny, nz)
+    image.SetDimensions(*reversed(values.shape))
     array = numpy_to_vtk(values.ravel().astype(np.float32), deep=1)
     array.SetName("density")
     image.GetPointData().SetScalars(array)
