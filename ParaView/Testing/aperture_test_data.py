@@ -130,9 +130,9 @@ DEEP_WELL = {"dimensions": (48, 48, 80), "centre": (24.0, 24.0), "floor": 34.0, 
 
 def write_well_volume(path, s=WELL):
     """A .vti volume of unit voxels of the well s: a block (value 100) under z = top with a round
-    well down to z = floor, its wall a ring (value 200) out to the ring radius, empty (0) elsewhere. The
-    well's floor sees the sky within atan(radius / depth) of the zenith; with the ring
-    transparent, within atan(ring / depth)."""
+    well down to z = floor, its wall a ring (value 200) out to the ring radius, empty (0)
+    elsewhere. The well's floor sees the sky within atan(radius / depth) of the zenith; with the
+    ring transparent, within atan(ring / depth)."""
     import numpy as np
 
     nx, ny, nz = s["dimensions"]

@@ -22,7 +22,8 @@ def main(data, folder):
     reader.Update()
     volume = reader.GetOutput()
     os.makedirs(os.path.join(folder, "dicom"), exist_ok=True)
-    for name, writer in (("head.vti", vtkXMLImageDataWriter()), ("head.mha", vtkMetaImageWriter())):
+    for name, writer in (("head.vti", vtkXMLImageDataWriter()),
+                         ("head.mha", vtkMetaImageWriter())):
         writer.SetInputData(volume)
         writer.SetFileName(os.path.join(folder, name))
         writer.Write()

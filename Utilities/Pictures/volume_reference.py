@@ -175,7 +175,8 @@ def main():
     parser.add_argument("--azimuth", type=float, default=0.0, help="camera turn (degrees)")
     parser.add_argument("--elevation", type=float, default=0.0, help="camera tilt (degrees)")
     parser.add_argument("--check", action="store_true",
-                        help="fail unless the voxels' caps are nearer the reference than no shadow")
+                        help="fail unless the voxels' caps are much nearer the reference than "
+                        "no shadow")
     args = parser.parse_args()
     size = [int(v) for v in args.size.split("x")]
     volume = read_volume(args.volume)
