@@ -181,7 +181,7 @@ install: build
 	@cmake --install $(BUILD_DIR)
 
 format:
-	@find Core IO Rendering Testing Examples -name '*.h' -o -name '*.cxx' 2>/dev/null \
+	@find Core IO Rendering Volume ParaView Testing Examples -name '*.h' -o -name '*.cxx' 2>/dev/null \
 	  | xargs clang-format -i --style=file
 
 clean:

@@ -4,6 +4,8 @@ file(GLOB_RECURSE sources
   "${SOURCE_DIR}/Core/*.h" "${SOURCE_DIR}/Core/*.cxx"
   "${SOURCE_DIR}/IO/*.h" "${SOURCE_DIR}/IO/*.cxx"
   "${SOURCE_DIR}/Rendering/*.h" "${SOURCE_DIR}/Rendering/*.cxx"
+  "${SOURCE_DIR}/Volume/*.h" "${SOURCE_DIR}/Volume/*.cxx"
+  "${SOURCE_DIR}/ParaView/*.h" "${SOURCE_DIR}/ParaView/*.cxx"
   "${SOURCE_DIR}/Testing/*.h" "${SOURCE_DIR}/Testing/*.cxx"
   "${SOURCE_DIR}/Examples/*.h" "${SOURCE_DIR}/Examples/*.cxx")
 list(LENGTH sources count)

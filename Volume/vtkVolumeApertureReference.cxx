@@ -10,6 +10,7 @@
 =========================================================================*/
 #include "vtkVolumeApertureReference.h"
 
+#include "vtkApertureSMP.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -17,7 +18,6 @@
 #include "vtkMatrix3x3.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
-#include "vtkApertureSMP.h"
 #include "vtkSphericalCap.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkVolumeExtinction.h"
@@ -65,8 +65,8 @@ void Frame(const double axis[3], double u[3], double v[3])
 
 // The i-th of n directions spread evenly over the cap (axis, cos r) by a spherical Fibonacci
 // spiral, turned by `turn` (a fraction of a whole turn) and shifted by `jitter` within its ring.
-void CapDirection(const double axis[3], double cosRadius, int i, int n, double turn, double jitter,
-  double w[3])
+void CapDirection(
+  const double axis[3], double cosRadius, int i, int n, double turn, double jitter, double w[3])
 {
   double u[3], v[3];
   Frame(axis, u, v);
@@ -172,13 +172,11 @@ Marcher MakeMarcher(vtkImageData* input, const float* sigma, int gridStep, doubl
     bounds[2 * a] = 0.0;
     bounds[2 * a + 1] = (extent[2 * a + 1] - extent[2 * a]) * marcher.Spacing[a];
   }
-  const double smallest =
-    std::min({ marcher.Spacing[0], marcher.Spacing[1], marcher.Spacing[2] });
-  const double distance = maximumDistance > 0.0
-    ? maximumDistance
-    : vtkVolumeExtinction::DefaultMaximumDistance(bounds);
-  marcher.Falloff = std::max(distance, smallest * gridStep) /
-    vtkVolumeExtinction::FalloffsPerDistance;
+  const double smallest = std::min({ marcher.Spacing[0], marcher.Spacing[1], marcher.Spacing[2] });
+  const double distance =
+    maximumDistance > 0.0 ? maximumDistance : vtkVolumeExtinction::DefaultMaximumDistance(bounds);
+  marcher.Falloff =
+    std::max(distance, smallest * gridStep) / vtkVolumeExtinction::FalloffsPerDistance;
   marcher.Step = 0.25 * smallest;
   return marcher;
 }
@@ -280,11 +278,10 @@ int vtkVolumeApertureReference::RequestData(
 
   const int step = this->ApertureGridStep * this->SampleStep;
   int outExt[6];
-  vtkStreamingDemandDrivenPipeline::GetUpdateExtent(
-    this->GetOutputInformation(0), outExt);
+  vtkStreamingDemandDrivenPipeline::GetUpdateExtent(this->GetOutputInformation(0), outExt);
   output->SetExtent(outExt);
-  output->SetSpacing(marcher.Spacing[0] * step, marcher.Spacing[1] * step,
-    marcher.Spacing[2] * step);
+  output->SetSpacing(
+    marcher.Spacing[0] * step, marcher.Spacing[1] * step, marcher.Spacing[2] * step);
   output->SetOrigin(input->GetOrigin());
   output->SetDirectionMatrix(input->GetDirectionMatrix());
   const vtkIdType count = output->GetNumberOfPoints();
@@ -309,28 +306,30 @@ int vtkVolumeApertureReference::RequestData(
   const int outDims[3] = { outExt[1] - outExt[0] + 1, outExt[3] - outExt[2] + 1,
     outExt[5] - outExt[4] + 1 };
   const int samples = this->NumberOfSamples;
-  vtkApertureSMP::For(0, count, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
+  vtkApertureSMP::For(0, count,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      const int ijk[3] = { static_cast<int>(i % outDims[0]),
-        static_cast<int>((i / outDims[0]) % outDims[1]),
-        static_cast<int>(i / (vtkIdType(outDims[0]) * outDims[1])) };
-      int start[3];
-      for (int a = 0; a < 3; ++a)
+      for (vtkIdType i = begin; i < end; ++i)
       {
-        start[a] = (outExt[2 * a] + ijk[a]) * step - extent[2 * a];
+        const int ijk[3] = { static_cast<int>(i % outDims[0]),
+          static_cast<int>((i / outDims[0]) % outDims[1]),
+          static_cast<int>(i / (vtkIdType(outDims[0]) * outDims[1])) };
+        int start[3];
+        for (int a = 0; a < 3; ++a)
+        {
+          start[a] = (outExt[2 * a] + ijk[a]) * step - extent[2 * a];
+        }
+        double sum = 0.0;
+        double moment[3] = { 0.0, 0.0, 0.0 };
+        marcher.Integrate(start, axis, cosRadius, samples, sum, moment);
+        if (!sphere)
+        {
+          values->SetValue(i, static_cast<float>(sum / samples));
+          continue;
+        }
+        StoreSphere(i, sum, moment, samples, rotation, values, bent);
       }
-      double sum = 0.0;
-      double moment[3] = { 0.0, 0.0, 0.0 };
-      marcher.Integrate(start, axis, cosRadius, samples, sum, moment);
-      if (!sphere)
-      {
-        values->SetValue(i, static_cast<float>(sum / samples));
-        continue;
-      }
-      StoreSphere(i, sum, moment, samples, rotation, values, bent);
-    }
-  });
+    });
   output->GetPointData()->AddArray(values);
   if (sphere)
   {
@@ -349,7 +348,7 @@ void vtkVolumeApertureReference::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ApertureGridStep: " << this->ApertureGridStep << "\n";
   os << indent << "SampleStep: " << this->SampleStep << "\n";
   os << indent << "NumberOfSamples: " << this->NumberOfSamples << "\n";
-  os << indent << "LightDirection: (" << this->LightDirection[0] << ", "
-     << this->LightDirection[1] << ", " << this->LightDirection[2] << ")\n";
+  os << indent << "LightDirection: (" << this->LightDirection[0] << ", " << this->LightDirection[1]
+     << ", " << this->LightDirection[2] << ")\n";
   os << indent << "LightRadius: " << this->LightRadius << "\n";
 }

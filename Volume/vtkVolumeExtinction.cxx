@@ -10,6 +10,7 @@
 =========================================================================*/
 #include "vtkVolumeExtinction.h"
 
+#include "vtkApertureSMP.h"
 #include "vtkApertureText.h"
 #include "vtkArrayDispatch.h"
 #include "vtkDataArray.h"
@@ -17,7 +18,6 @@
 #include "vtkImageData.h"
 #include "vtkMatrix3x3.h"
 #include "vtkPiecewiseFunction.h"
-#include "vtkApertureSMP.h"
 #include "vtkVolumeProperty.h"
 
 #include <algorithm>
@@ -37,8 +37,8 @@ struct FiniteWorker
   void operator()(ArrayT* array)
   {
     const auto values = vtk::DataArrayValueRange<1>(array);
-    this->Finite = std::all_of(values.cbegin(), values.cend(),
-      [](double v) { return std::isfinite(v); });
+    this->Finite =
+      std::all_of(values.cbegin(), values.cend(), [](double v) { return std::isfinite(v); });
   }
 };
 
@@ -54,16 +54,18 @@ struct SigmaWorker
   {
     const auto values = vtk::DataArrayValueRange<1>(array);
     const std::vector<double>& table = *this->Table;
-    vtkApertureSMP::For(0, values.size(), [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType i = begin; i < end; ++i)
+    vtkApertureSMP::For(0, values.size(),
+      [&](vtkIdType begin, vtkIdType end)
       {
-        const double x = std::min(std::max((values[i] - this->Low) * this->Scale, 0.0),
-          static_cast<double>(TableSize - 1));
-        const int k = std::min(static_cast<int>(x), TableSize - 2);
-        const double t = x - k;
-        this->Sigma[i] = static_cast<float>(table[k] + t * (table[k + 1] - table[k]));
-      }
-    });
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          const double x = std::min(std::max((values[i] - this->Low) * this->Scale, 0.0),
+            static_cast<double>(TableSize - 1));
+          const int k = std::min(static_cast<int>(x), TableSize - 2);
+          const double t = x - k;
+          this->Sigma[i] = static_cast<float>(table[k] + t * (table[k + 1] - table[k]));
+        }
+      });
   }
 };
 
@@ -111,29 +113,31 @@ std::vector<float> DecimateAxis(
   const vtkIdType lines = vtkIdType(dims[0]) * dims[1] * dims[2] / n;
   const std::vector<double> weights = TentWeights(step);
   std::vector<float> result(static_cast<size_t>(lines * m));
-  vtkApertureSMP::For(0, lines, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType line = begin; line < end; ++line)
+  vtkApertureSMP::For(0, lines,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      // The line's first sample, in and out: the other two indices are kept.
-      const vtkIdType outer = line / stride;
-      const vtkIdType inner = line % stride;
-      const vtkIdType inBase = outer * stride * n + inner;
-      const vtkIdType outBase = outer * outStride * m + inner;
-      for (int j = 0; j < m; ++j)
+      for (vtkIdType line = begin; line < end; ++line)
       {
-        double sum = 0.0;
-        for (int d = -(step - 1); d < step; ++d)
+        // The line's first sample, in and out: the other two indices are kept.
+        const vtkIdType outer = line / stride;
+        const vtkIdType inner = line % stride;
+        const vtkIdType inBase = outer * stride * n + inner;
+        const vtkIdType outBase = outer * outStride * m + inner;
+        for (int j = 0; j < m; ++j)
         {
-          const int i = offset + j * step + d;
-          if (i >= 0 && i < n)
+          double sum = 0.0;
+          for (int d = -(step - 1); d < step; ++d)
           {
-            sum += weights[d + step - 1] * in[inBase + i * stride];
+            const int i = offset + j * step + d;
+            if (i >= 0 && i < n)
+            {
+              sum += weights[d + step - 1] * in[inBase + i * stride];
+            }
           }
+          result[outBase + j * outStride] = static_cast<float>(sum);
         }
-        result[outBase + j * outStride] = static_cast<float>(sum);
       }
-    }
-  });
+    });
   dims[axis] = m;
   return result;
 }
@@ -245,9 +249,9 @@ std::vector<float> vtkVolumeExtinction::Compute(
   property->GetScalarOpacity(0)->GetTable(range[0], range[1], TableSize, opacity.data());
   std::vector<double> table(TableSize);
   const double most = MaximumOpacity; // a copy: std::min takes references
-  std::transform(opacity.begin(), opacity.end(), table.begin(), [unit, most](double alpha) {
-    return -std::log1p(-std::min(std::max(alpha, 0.0), most)) / unit;
-  });
+  std::transform(opacity.begin(), opacity.end(), table.begin(),
+    [unit, most](double alpha)
+    { return -std::log1p(-std::min(std::max(alpha, 0.0), most)) / unit; });
   std::vector<float> sigma(static_cast<size_t>(image->GetNumberOfPoints()));
   SigmaWorker worker{ &table, range[0],
     range[1] > range[0] ? (TableSize - 1) / (range[1] - range[0]) : 0.0, sigma.data() };

@@ -80,8 +80,8 @@ public:
    * nothing outside the grid: what is left of σ on a coarser aperture grid keeps the volume's
    * optical depth. outDims receives the coarse grid's dimensions.
    */
-  static std::vector<float> Decimate(
-    const std::vector<float>& sigma, const int dims[3], int step, const int offset[3], int outDims[3]);
+  static std::vector<float> Decimate(const std::vector<float>& sigma, const int dims[3], int step,
+    const int offset[3], int outDims[3]);
 
   /**
    * Trilinear σ at continuous index (x, y, z) of a grid of dims; nothing outside it.

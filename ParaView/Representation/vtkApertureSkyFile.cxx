@@ -43,8 +43,9 @@ bool vtkApertureSkyFile::SetFileName(const char* fileName, vtkObject* reporter)
     }
     else
     {
-      vtkErrorWithObjectMacro(reporter, "Cannot read the sky environment "
-          << vtkApertureText::QuoteName(name) << "; the sky stays uniform.");
+      vtkErrorWithObjectMacro(reporter,
+        "Cannot read the sky environment " << vtkApertureText::QuoteName(name)
+                                           << "; the sky stays uniform.");
     }
   }
   return true;
