@@ -42,7 +42,8 @@ test: build
 	  ctest --output-on-failure --parallel $(JOBS)
 
 # The pictures in README.md and docs/: every shading mode on the Fuji terrain and on the bunny, the
-# aperture radius as colours, HDR environments, dynamic scenes, real meshes and a 10,000² DEM.
+# aperture radius as colours, HDR environments, dynamic scenes, real meshes, a 10,000² DEM and the
+# head MR against the volume reference.
 pictures: build
 	@mkdir -p docs/images $(BUILD_DIR)/demo
 	@$(RENDER) -o docs/images/fuji.png --size 1280x800 \
@@ -70,6 +71,8 @@ pictures: build
 	  $(BUILD_DIR)/bin/aperture-render Testing/Data $(BUILD_DIR)/demo/real docs/images
 	@. $(BUILD_DIR)/env.sh && $(XVFB) $(PYTHON) Utilities/Pictures/big_terrain.py \
 	  $(BUILD_DIR)/bin/aperture-render Testing/Data $(BUILD_DIR)/demo/terrain docs/images
+	@. $(BUILD_DIR)/env.sh && $(XVFB) $(PYTHON) Utilities/Pictures/volume_reference.py \
+	  Testing/Data/volumes/head-t1-mr.nii.gz docs/images/volume-reference-mr.png --size 300x300
 
 # The accuracy evaluation (docs/evaluation-tables.md, docs/images/evaluation-montage.png) and the
 # performance report (docs/performance.md and its plots); REPORT_MAX_LEVEL limits Table 1.
