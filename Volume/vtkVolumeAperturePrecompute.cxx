@@ -212,20 +212,17 @@ void ApertureSweeps::Write(vtkImageData* output, const int outExt[6], const int 
   radius->SetNumberOfTuples(count);
 
   const double cell = 4.0 * Pi / directions;
-  const int outDims[3] = { outExt[1] - outExt[0] + 1, outExt[3] - outExt[2] + 1,
-    outExt[5] - outExt[4] + 1 };
   vtkApertureSMP::For(0, count,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType i = begin; i < end; ++i)
       {
-        const int ijk[3] = { static_cast<int>(i % outDims[0]),
-          static_cast<int>((i / outDims[0]) % outDims[1]),
-          static_cast<int>(i / (vtkIdType(outDims[0]) * outDims[1])) };
+        int ijk[3];
+        vtkVolumeExtinction::ExtentPoint(outExt, i, ijk);
         vtkIdType v = 0;
         for (int a = 2; a >= 0; --a)
         {
-          v = v * this->Dims[a] + (outExt[2 * a] + ijk[a] - region[2 * a]);
+          v = v * this->Dims[a] + (ijk[a] - region[2 * a]);
         }
         const double open = this->Open[v];
         double b[3] = { this->Bent[3 * v], this->Bent[3 * v + 1], this->Bent[3 * v + 2] };

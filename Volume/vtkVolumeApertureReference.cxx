@@ -303,21 +303,17 @@ int vtkVolumeApertureReference::RequestData(
     vtkErrorMacro("Cannot compute the volume reference: the light direction is not a direction.");
     return 0;
   }
-  const int outDims[3] = { outExt[1] - outExt[0] + 1, outExt[3] - outExt[2] + 1,
-    outExt[5] - outExt[4] + 1 };
   const int samples = this->NumberOfSamples;
   vtkApertureSMP::For(0, count,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType i = begin; i < end; ++i)
       {
-        const int ijk[3] = { static_cast<int>(i % outDims[0]),
-          static_cast<int>((i / outDims[0]) % outDims[1]),
-          static_cast<int>(i / (vtkIdType(outDims[0]) * outDims[1])) };
         int start[3];
+        vtkVolumeExtinction::ExtentPoint(outExt, i, start);
         for (int a = 0; a < 3; ++a)
         {
-          start[a] = (outExt[2 * a] + ijk[a]) * step - extent[2 * a];
+          start[a] = start[a] * step - extent[2 * a];
         }
         double sum = 0.0;
         double moment[3] = { 0.0, 0.0, 0.0 };

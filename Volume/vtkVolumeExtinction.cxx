@@ -277,6 +277,17 @@ std::vector<float> vtkVolumeExtinction::Decimate(
 }
 
 //------------------------------------------------------------------------------
+void vtkVolumeExtinction::ExtentPoint(const int extent[6], vtkIdType n, int ijk[3])
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    const vtkIdType size = extent[2 * a + 1] - extent[2 * a] + 1;
+    ijk[a] = extent[2 * a] + static_cast<int>(n % size);
+    n /= size;
+  }
+}
+
+//------------------------------------------------------------------------------
 double vtkVolumeExtinction::Sample(
   const float* sigma, const int dims[3], double x, double y, double z)
 {

@@ -27,6 +27,7 @@
 #define vtkVolumeExtinction_h
 
 #include "vtkApertureLightingVolumeModule.h" // For export macro
+#include "vtkType.h"                         // For vtkIdType
 
 #include <string>
 #include <vector>
@@ -87,6 +88,12 @@ public:
    * Trilinear σ at continuous index (x, y, z) of a grid of dims; nothing outside it.
    */
   static double Sample(const float* sigma, const int dims[3], double x, double y, double z);
+
+  /**
+   * The structured index of point n of extent (x fastest), as filters that write an output
+   * extent point by point need it.
+   */
+  static void ExtentPoint(const int extent[6], vtkIdType n, int ijk[3]);
 };
 
 #endif
