@@ -20,11 +20,12 @@ import sys
 import numpy as np
 import paraview.simple as pvs
 from paraview import servermanager
-from aperture_test_data import DEEP_WELL, dark_view, read_png, shot, write_well_volume
+from aperture_test_data import DEEP_WELL, read_png, shot, volume_from_above, write_well_volume
 from vtkmodules.vtkRenderingCore import vtkCoordinate
 
 SIZE = 300
 REACH = 12.0  # the Occluder Reach (MaximumDistance) in voxels: 1.5 times it is the halo
+OPACITY = [0.0, 0.0, 0.5, 0.0, 40.0, 0.0, 0.5, 0.0, 60.0, 1.0, 0.5, 0.0, 100.0, 1.0, 0.5, 0.0]
 
 
 def scene(work):
@@ -34,32 +35,11 @@ def scene(work):
         write_well_volume(path, DEEP_WELL)
     process.GetGlobalController().Barrier()
     source = pvs.OpenDataFile(path)
-    view = dark_view(SIZE)
-    view.UseLight = 0  # the light kit off: one scene light
-    light = pvs.AddLight(view=view)
-    light.Coords = "Scene"
-    light.Type = "Directional"
-    light.FocalPoint = [0.0, 0.0, 0.0]
+    view, light, display, _ = volume_from_above(
+        source, SIZE, OPACITY, DEEP_WELL["centre"], 0.5 * DEEP_WELL["dimensions"][1])
     light.Position = [1.0, 0.0, 1.0]  # 45 degrees from the zenith
-    light.Intensity = 0.6
-    display = pvs.Show(source, view)
-    pvs.ColorBy(display, ("POINTS", "density"))
-    pvs.GetColorTransferFunction("density").RGBPoints = [0.0, 1, 1, 1, 100.0, 1, 1, 1]
-    pvs.GetOpacityTransferFunction("density").Points = [0.0, 0.0, 0.5, 0.0, 40.0, 0.0, 0.5, 0.0,
-                                                        60.0, 1.0, 0.5, 0.0, 100.0, 1.0, 0.5, 0.0]
-    display.ScalarOpacityUnitDistance = 1.0
-    display.Ambient = 0.0
-    display.Diffuse = 1.0
-    display.Specular = 0.0
     display.SetRepresentationType("Aperture Volume")
     display.ApertureVolumeMaximumDistance = REACH
-    pvs.Render(view)  # the first render resets the camera: set it after
-    centre = DEEP_WELL["centre"]
-    view.CameraPosition = [centre[0], centre[1], 200.0]
-    view.CameraFocalPoint = [centre[0], centre[1], 0.0]
-    view.CameraViewUp = [0.0, 1.0, 0.0]
-    view.CameraParallelProjection = 1
-    view.CameraParallelScale = 0.5 * DEEP_WELL["dimensions"][1]
     return source, view
 
 

@@ -20,7 +20,8 @@ import os
 import sys
 
 import paraview.simple as pvs
-from aperture_test_data import WELL, baseline_error, dark_view, shot, write_well_volume
+from aperture_test_data import (WELL, baseline_error, shot, volume_from_above,
+                                write_well_volume)
 
 FAILURES = []
 SIZE = 400
@@ -55,29 +56,7 @@ def scene(work):
     path = os.path.join(work, "well.vti")
     write_well_volume(path)
     source = pvs.OpenDataFile(path)
-    view = dark_view(SIZE)
-    view.UseLight = 0  # the light kit off: one scene light
-    light = pvs.AddLight(view=view)
-    light.Coords = "Scene"
-    light.Type = "Directional"
-    light.FocalPoint = [0.0, 0.0, 0.0]
-    light.Intensity = 0.6
-    display = pvs.Show(source, view)
-    pvs.ColorBy(display, ("POINTS", "density"))
-    lut = pvs.GetColorTransferFunction("density")
-    lut.RGBPoints = [0.0, 1.0, 1.0, 1.0, 200.0, 1.0, 1.0, 1.0]
-    opacity = pvs.GetOpacityTransferFunction("density")
-    opacity.Points = OPAQUE
-    display.ScalarOpacityUnitDistance = 1.0
-    display.Ambient = 0.0
-    display.Diffuse = 1.0
-    display.Specular = 0.0
-    pvs.Render(view)  # the first render resets the camera: set it after
-    view.CameraPosition = [32.0, 24.0, 200.0]
-    view.CameraFocalPoint = [32.0, 24.0, 0.0]
-    view.CameraViewUp = [0, 1, 0]
-    view.CameraParallelProjection = 1
-    view.CameraParallelScale = SCALE
+    view, light, display, opacity = volume_from_above(source, SIZE, OPAQUE, (32.0, 24.0), SCALE)
     return view, display, light, opacity
 
 

@@ -14,6 +14,39 @@ def dark_view(size):
     return view
 
 
+def volume_from_above(source, size, opacity_points, centre, scale):
+    """The volume `source` (scalars "density") drawn white through the opacity points and lit by
+    Diffuse alone, in a view of one directional scene light (the light kit off, intensity 0.6;
+    the caller places it), seen straight down the z axis onto centre (x, y) in parallel
+    projection of the given scale. Returns the view, the light, the display and the opacity."""
+    import paraview.simple as pvs
+
+    view = dark_view(size)
+    view.UseLight = 0
+    light = pvs.AddLight(view=view)
+    light.Coords = "Scene"
+    light.Type = "Directional"
+    light.FocalPoint = [0.0, 0.0, 0.0]
+    light.Intensity = 0.6
+    display = pvs.Show(source, view)
+    pvs.ColorBy(display, ("POINTS", "density"))
+    top = opacity_points[-4]
+    pvs.GetColorTransferFunction("density").RGBPoints = [0.0, 1, 1, 1, top, 1, 1, 1]
+    opacity = pvs.GetOpacityTransferFunction("density")
+    opacity.Points = opacity_points
+    display.ScalarOpacityUnitDistance = 1.0
+    display.Ambient = 0.0
+    display.Diffuse = 1.0
+    display.Specular = 0.0
+    pvs.Render(view)  # the first render resets the camera: set it after
+    view.CameraPosition = [centre[0], centre[1], 200.0]
+    view.CameraFocalPoint = [centre[0], centre[1], 0.0]
+    view.CameraViewUp = [0.0, 1.0, 0.0]
+    view.CameraParallelProjection = 1
+    view.CameraParallelScale = scale
+    return view, light, display, opacity
+
+
 def shot(view, work, name, size=400):
     """Renders the view and returns its size x size picture, written to work/name.png."""
     import paraview.simple as pvs
