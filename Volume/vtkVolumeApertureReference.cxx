@@ -15,6 +15,7 @@
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMath.h"
 #include "vtkMatrix3x3.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -79,6 +80,13 @@ void CapDirection(
   }
 }
 
+// One marched ray: its transmittance and unit direction.
+struct Ray
+{
+  double T;
+  double Omega[3];
+};
+
 // The transmittance along unit `omega` (image axes) from voxel `start`.
 struct Marcher
 {
@@ -115,9 +123,9 @@ struct Marcher
   }
 
   // Sums T and T ω over `samples` directions spread over the cap (axis, cos r), turned by a
-  // rotation drawn from the voxel's index.
+  // rotation drawn from the voxel's index; each ray into `rays` when it is given.
   void Integrate(const int start[3], const double axis[3], double cosRadius, int samples,
-    double& sum, double moment[3]) const
+    double& sum, double moment[3], std::vector<Ray>* rays) const
   {
     const uint64_t key = static_cast<uint64_t>(
       start[0] + this->Dims[0] * (start[1] + uint64_t(this->Dims[1]) * start[2]));
@@ -127,6 +135,10 @@ struct Marcher
       double w[3];
       CapDirection(axis, cosRadius, s, samples, turn, Hash(key * 4096 + s, 2), w);
       const double t = this->Transmittance(start, w);
+      if (rays)
+      {
+        rays->push_back({ t, { w[0], w[1], w[2] } });
+      }
       sum += t;
       for (int a = 0; a < 3; ++a)
       {
@@ -136,24 +148,102 @@ struct Marcher
   }
 };
 
-// The radius and bent normal of a voxel's marched rays over the whole sphere, into tuple i.
-void StoreSphere(vtkIdType i, double sum, const double moment[3], int samples,
-  vtkMatrix3x3* rotation, vtkFloatArray* values, vtkFloatArray* bent)
+// The unit direction of ∫ T ω (+z where it vanishes, as in free space).
+void MeanDirection(double sum, const double moment[3], double unit[3])
 {
-  const double solid = 4.0 * Pi * sum / samples;
-  values->SetValue(i, static_cast<float>(vtkSphericalCap::CapRadiusFromSolidAngle(solid)));
-  const double length =
-    std::sqrt(moment[0] * moment[0] + moment[1] * moment[1] + moment[2] * moment[2]);
-  double unit[3] = { 0.0, 0.0, 1.0 };
-  if (length > 1e-4 * sum && length > 0.0)
+  const double length = vtkMath::Norm(moment);
+  const bool some = length > 1e-4 * sum && length > 0.0;
+  for (int a = 0; a < 3; ++a)
   {
-    unit[0] = moment[0] / length;
-    unit[1] = moment[1] / length;
-    unit[2] = moment[2] / length;
+    unit[a] = some ? moment[a] / length : (a == 2 ? 1.0 : 0.0);
   }
-  double world[3];
-  rotation->MultiplyPoint(unit, world);
-  bent->SetTuple(i, world);
+}
+
+// The radius about unit `axis` of least Σ |T − cap| over `rays`, and that sum. Opening the cap
+// past a ray changes the sum by 1 − 2T, so the best radius closes where the running change is
+// lowest, halfway between two rays.
+double NearestRadius(const std::vector<Ray>& rays, const double axis[3],
+  std::vector<std::pair<double, double>>& order, double& error)
+{
+  order.clear();
+  error = 0.0;
+  for (const Ray& ray : rays)
+  {
+    order.emplace_back(-vtkMath::Dot(ray.Omega, axis), ray.T);
+    error += ray.T; // an empty cap misses every ray's T
+  }
+  std::sort(order.begin(), order.end());
+  double running = error;
+  size_t inside = 0;
+  for (size_t k = 0; k < order.size(); ++k)
+  {
+    running += 1.0 - 2.0 * order[k].second;
+    if (running < error)
+    {
+      error = running;
+      inside = k + 1;
+    }
+  }
+  if (inside == 0 || inside == order.size())
+  {
+    return inside == 0 ? 0.0 : Pi;
+  }
+  const double cosine = -0.5 * (order[inside - 1].first + order[inside].first);
+  return std::acos(std::max(-1.0, std::min(1.0, cosine)));
+}
+
+// The cap nearest `rays`: from `axis` (in: a start, out: the cap's), steps of falling angle
+// toward whichever of eight neighbours lowers the error, each with its best radius.
+double NearestCap(
+  const std::vector<Ray>& rays, double axis[3], std::vector<std::pair<double, double>>& order)
+{
+  double error;
+  double radius = NearestRadius(rays, axis, order, error);
+  for (double step = 0.4; step > 0.004; step *= 0.5)
+  {
+    for (bool moved = true; moved;)
+    {
+      moved = false;
+      double u[3], v[3], best[3];
+      Frame(axis, u, v);
+      for (int k = 0; k < 8; ++k)
+      {
+        const double phi = 0.25 * Pi * k;
+        double w[3];
+        for (int a = 0; a < 3; ++a)
+        {
+          w[a] = std::cos(step) * axis[a] +
+            std::sin(step) * (std::cos(phi) * u[a] + std::sin(phi) * v[a]);
+        }
+        double e;
+        const double r = NearestRadius(rays, w, order, e);
+        if (e < error - 1e-9)
+        {
+          error = e;
+          radius = r;
+          std::copy(w, w + 3, best);
+          moved = true;
+        }
+      }
+      if (moved)
+      {
+        std::copy(best, best + 3, axis);
+      }
+    }
+  }
+  return radius;
+}
+
+// The cap (radius, image-axes unit axis) of a voxel's rays over the whole sphere, by `fit`.
+double SphereCap(int fit, const std::vector<Ray>& rays, double sum, const double moment[3],
+  std::vector<std::pair<double, double>>& order, double axis[3])
+{
+  MeanDirection(sum, moment, axis);
+  if (fit == vtkVolumeApertureReference::NEAREST)
+  {
+    return NearestCap(rays, axis, order);
+  }
+  return vtkSphericalCap::CapRadiusFromSolidAngle(4.0 * Pi * sum / rays.size());
 }
 
 // The marcher of `input`'s σ, for an aperture grid of every gridStep-th voxel.
@@ -307,6 +397,9 @@ int vtkVolumeApertureReference::RequestData(
   vtkApertureSMP::For(0, count,
     [&](vtkIdType begin, vtkIdType end)
     {
+      std::vector<Ray> rays;
+      std::vector<std::pair<double, double>> order;
+      rays.reserve(sphere ? samples : 0);
       for (vtkIdType i = begin; i < end; ++i)
       {
         int start[3];
@@ -317,13 +410,18 @@ int vtkVolumeApertureReference::RequestData(
         }
         double sum = 0.0;
         double moment[3] = { 0.0, 0.0, 0.0 };
-        marcher.Integrate(start, axis, cosRadius, samples, sum, moment);
+        rays.clear();
+        marcher.Integrate(start, axis, cosRadius, samples, sum, moment, sphere ? &rays : nullptr);
         if (!sphere)
         {
           values->SetValue(i, static_cast<float>(sum / samples));
           continue;
         }
-        StoreSphere(i, sum, moment, samples, rotation, values, bent);
+        double capAxis[3], world[3];
+        const double radius = SphereCap(this->CapFit, rays, sum, moment, order, capAxis);
+        values->SetValue(i, static_cast<float>(radius));
+        rotation->MultiplyPoint(capAxis, world);
+        bent->SetTuple(i, world);
       }
     });
   output->GetPointData()->AddArray(values);
@@ -339,6 +437,7 @@ void vtkVolumeApertureReference::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Source: " << (this->Source == SPHERE ? "SPHERE" : "LIGHT") << "\n";
+  os << indent << "CapFit: " << (this->CapFit == NEAREST ? "NEAREST" : "MOMENTS") << "\n";
   os << indent << "VolumeProperty: " << this->VolumeProperty << "\n";
   os << indent << "MaximumDistance: " << this->MaximumDistance << "\n";
   os << indent << "ApertureGridStep: " << this->ApertureGridStep << "\n";

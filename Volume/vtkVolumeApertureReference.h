@@ -24,8 +24,11 @@
  *   1 when nothing is in the way. The volume mapper's shading of a voxel under that light
  *   (vtkSphericalCap: the light cap's area within the aperture, over the light cap's area) is
  *   the estimate of it.
- * - SPHERE: `ReferenceApertureRadius` and `ReferenceBentNormal` from ∫ T dω and ∫ T ω dω over the
- *   whole sphere, the quantities the precompute outputs.
+ * - SPHERE: `ReferenceApertureRadius` and `ReferenceBentNormal` over the whole sphere, by CapFit:
+ *   from ∫ T dω and ∫ T ω dω (MOMENTS, the quantities the precompute outputs), or the cap nearest
+ *   the marched visibility (NEAREST: the least ∫ |T − cap| dω, searched over axis and radius),
+ *   the best any one cap can do, which says how much of an error is the cap's and how much the
+ *   precompute's.
  *
  * Output: an image of every SampleStep-th voxel of the aperture grid (ApertureGridStep as in the
  * precompute), so that its points are points of the precompute's output. Each voxel's sample set
@@ -63,6 +66,20 @@ public:
    */
   vtkSetClampMacro(Source, int, LIGHT, SPHERE);
   vtkGetMacro(Source, int);
+  ///@}
+
+  enum CapFits
+  {
+    MOMENTS = 0,
+    NEAREST = 1
+  };
+
+  ///@{
+  /**
+   * How SPHERE fits a cap to the marched rays (see the class description). Default MOMENTS.
+   */
+  vtkSetClampMacro(CapFit, int, MOMENTS, NEAREST);
+  vtkGetMacro(CapFit, int);
   ///@}
 
   ///@{
@@ -120,6 +137,7 @@ protected:
   bool LightAxis(vtkMatrix3x3* rotation, double axis[3]) const;
 
   int Source = LIGHT;
+  int CapFit = MOMENTS;
   vtkVolumeProperty* VolumeProperty = nullptr;
   double MaximumDistance = 0.0;
   int ApertureGridStep = 1;

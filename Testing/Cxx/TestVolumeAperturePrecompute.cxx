@@ -10,7 +10,8 @@
 =========================================================================*/
 // vtkVolumeAperturePrecompute on volumes whose answer is known: free space, an opaque half-space,
 // an opaque shell with one round opening, against vtkVolumeApertureReference's marched rays on a
-// cloud of soft balls (whole grid and a coarser one), pieces against the whole, and bad input.
+// cloud of soft balls (whole grid and a coarser one), the reference's nearest cap, pieces against
+// the whole, and bad input.
 
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -18,6 +19,7 @@
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
+#include "vtkSphericalCap.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTestErrorObserver.h"
 #include "vtkVolumeAperturePrecompute.h"
@@ -84,20 +86,24 @@ vtkSmartPointer<vtkImageData> Apertures(
   return result;
 }
 
-double RadiusAt(vtkImageData* apertures, int i, int j, int k)
+// The radius at (i, j, k); `prefix` "Reference" reads vtkVolumeApertureReference's output.
+double RadiusAt(vtkImageData* apertures, int i, int j, int k, const std::string& prefix = "")
 {
   int ijk[3] = { i, j, k };
   return apertures->GetPointData()
-    ->GetArray("ApertureRadius")
+    ->GetArray((prefix + "ApertureRadius").c_str())
     ->GetTuple1(apertures->ComputePointId(ijk));
 }
 
 // Angle in degrees between the bent normal at (i, j, k) and unit `axis`.
-double BentAngle(vtkImageData* apertures, int i, int j, int k, const double axis[3])
+double BentAngle(vtkImageData* apertures, int i, int j, int k, const double axis[3],
+  const std::string& prefix = "")
 {
   int ijk[3] = { i, j, k };
   double bent[3];
-  apertures->GetPointData()->GetArray("BentNormal")->GetTuple(apertures->ComputePointId(ijk), bent);
+  apertures->GetPointData()
+    ->GetArray((prefix + "BentNormal").c_str())
+    ->GetTuple(apertures->ComputePointId(ijk), bent);
   return vtkMath::DegreesFromRadians(std::acos(std::min(1.0, vtkMath::Dot(bent, axis))));
 }
 
@@ -105,6 +111,25 @@ bool Check(bool ok, const char* what, double value)
 {
   std::printf("%-62s %10.4f %s\n", what, value, ok ? "ok" : "FAILED");
   return ok;
+}
+
+// Opaque below z = 20 (48^3).
+vtkSmartPointer<vtkImageData> HalfSpace()
+{
+  return MakeVolume(48, [](double, double, double z) { return z < 20 ? 1.0 : 0.0; });
+}
+
+// A shell 3 voxels thick about (32, 32, 32) (65^3), open within alpha of unit `axis`.
+vtkSmartPointer<vtkImageData> Shell(double alpha, const double axis[3])
+{
+  return MakeVolume(65,
+    [&](double x, double y, double z)
+    {
+      const double d[3] = { x - 32, y - 32, z - 32 };
+      const double rho = vtkMath::Norm(d);
+      const bool open = rho > 0 && vtkMath::Dot(d, axis) / rho > std::cos(alpha);
+      return rho >= 22 && rho <= 25 && !open ? 1.0 : 0.0;
+    });
 }
 
 bool TestAnalytic(vtkVolumeProperty* property)
@@ -118,7 +143,7 @@ bool TestAnalytic(vtkVolumeProperty* property)
   ok &= Check(range[0] > Pi - 1e-3, "free space: smallest radius (pi)", range[0]);
 
   // Opaque below z = 20: the first empty layer sees half the sphere, about +z.
-  auto half = MakeVolume(48, [](double, double, double z) { return z < 20 ? 1.0 : 0.0; });
+  auto half = HalfSpace();
   const double up[3] = { 0.0, 0.0, 1.0 };
   for (int directions : { 64, 256 })
   {
@@ -132,26 +157,109 @@ bool TestAnalytic(vtkVolumeProperty* property)
       RadiusAt(apertures, 24, 24, 10));
   }
 
-  // A shell 3 voxels thick about the centre, open within alpha of `axis`.
   double axis[3] = { 0.3, -0.5, 0.81 };
   vtkMath::Normalize(axis);
   for (double alpha : { 0.35, 0.6, 1.0 })
   {
-    auto shell = MakeVolume(65,
-      [&](double x, double y, double z)
-      {
-        const double d[3] = { x - 32, y - 32, z - 32 };
-        const double rho = vtkMath::Norm(d);
-        const bool open = rho > 0 && vtkMath::Dot(d, axis) / rho > std::cos(alpha);
-        return rho >= 22 && rho <= 25 && !open ? 1.0 : 0.0;
-      });
-    auto apertures = Apertures(shell, property, 60.0, 1024);
+    auto apertures = Apertures(Shell(alpha, axis), property, 60.0, 1024);
     const double r = RadiusAt(apertures, 32, 32, 32);
     const double angle = BentAngle(apertures, 32, 32, 32, axis);
     std::printf("shell open by %.2f rad, 1024 directions:\n", alpha);
     ok &= Check(std::abs(r - alpha) <= 0.05, "  radius at the centre (alpha +- 0.05)", r);
     ok &= Check(angle <= 3.0, "  bent normal from the opening's axis, degrees (<= 3)", angle);
   }
+  return ok;
+}
+
+// vtkVolumeApertureReference on voxel ijk alone: SPHERE by `fit`, or LIGHT from unit `light`.
+vtkSmartPointer<vtkImageData> ReferenceAt(vtkImageData* volume, vtkVolumeProperty* property,
+  const int ijk[3], double distance, int fit, const double* light = nullptr)
+{
+  vtkNew<vtkVolumeApertureReference> reference;
+  reference->SetInputData(volume);
+  reference->SetVolumeProperty(property);
+  reference->SetMaximumDistance(distance);
+  reference->SetSampleStep(1);
+  reference->SetNumberOfSamples(light ? 256 : 4096);
+  reference->SetSource(
+    light ? vtkVolumeApertureReference::LIGHT : vtkVolumeApertureReference::SPHERE);
+  reference->SetCapFit(fit);
+  if (light)
+  {
+    reference->SetLightDirection(light[0], light[1], light[2]);
+    reference->SetLightRadius(0.1);
+  }
+  const int extent[6] = { ijk[0], ijk[0], ijk[1], ijk[1], ijk[2], ijk[2] };
+  reference->UpdateExtent(extent);
+  auto result = vtkSmartPointer<vtkImageData>::New();
+  result->ShallowCopy(reference->GetOutput());
+  return result;
+}
+
+// The nearest cap of the reference's marched rays: the known caps where one cap is exact, and
+// nearer a light's truth than the moments' cap where it is not (a ring of sky about a ball
+// overhead, whose moments' cap shrinks about the zenith where the nearest keeps the hemisphere).
+bool TestNearestCap(vtkVolumeProperty* property)
+{
+  bool ok = true;
+  const int centre[3] = { 32, 32, 32 };
+  double axis[3] = { 0.3, -0.5, 0.81 };
+  vtkMath::Normalize(axis);
+  for (double alpha : { 0.35, 1.0 })
+  {
+    auto cap =
+      ReferenceAt(Shell(alpha, axis), property, centre, 60.0, vtkVolumeApertureReference::NEAREST);
+    std::printf("reference's nearest cap, shell open by %.2f rad:\n", alpha);
+    const double r = RadiusAt(cap, 32, 32, 32, "Reference");
+    ok &= Check(std::abs(r - alpha) <= 0.05, "  radius at the centre (alpha +- 0.05)", r);
+    const double angle = BentAngle(cap, 32, 32, 32, axis, "Reference");
+    ok &= Check(angle <= 3.0, "  axis from the opening's axis, degrees (<= 3)", angle);
+  }
+  const int surface[3] = { 24, 24, 20 };
+  const double up[3] = { 0.0, 0.0, 1.0 };
+  auto half =
+    ReferenceAt(HalfSpace(), property, surface, 40.0, vtkVolumeApertureReference::NEAREST);
+  std::printf("reference's nearest cap, half-space:\n");
+  ok &= Check(std::abs(RadiusAt(half, 24, 24, 20, "Reference") - 0.5 * Pi) <= 0.05,
+    "  radius on the surface (pi/2 +- 0.05)", RadiusAt(half, 24, 24, 20, "Reference"));
+  ok &= Check(BentAngle(half, 24, 24, 20, up, "Reference") <= 3.0,
+    "  axis from the normal, degrees (<= 3)", BentAngle(half, 24, 24, 20, up, "Reference"));
+
+  // The half-space with a ball of radius 6 centred 12 above the voxel: 30 degrees of it.
+  auto ring = MakeVolume(48,
+    [](double x, double y, double z)
+    {
+      const double d[3] = { x - 24, y - 24, z - 32 };
+      return z < 20 || vtkMath::Norm(d) <= 6.0 ? 1.0 : 0.0;
+    });
+  vtkSmartPointer<vtkImageData> caps[2];
+  for (int fit : { vtkVolumeApertureReference::MOMENTS, vtkVolumeApertureReference::NEAREST })
+  {
+    caps[fit] = ReferenceAt(ring, property, surface, 40.0, fit);
+  }
+  double errors[2] = { 0.0, 0.0 };
+  const int lights = 24;
+  for (int l = 0; l < lights; ++l)
+  {
+    // Lights spread over the upper hemisphere (elevations 7.5 to 82.5 degrees).
+    const double z = (l + 0.5) / lights, phi = 2.39996323 * l, rho = std::sqrt(1.0 - z * z);
+    const double light[3] = { rho * std::cos(phi), rho * std::sin(phi), z };
+    auto truth = ReferenceAt(ring, property, surface, 40.0, 0, light);
+    const double value = truth->GetPointData()->GetArray("ReferenceIrradiance")->GetTuple1(0);
+    for (int fit = 0; fit < 2; ++fit)
+    {
+      const double d =
+        vtkMath::RadiansFromDegrees(BentAngle(caps[fit], 24, 24, 20, light, "Reference"));
+      const double share =
+        vtkSphericalCap::IntersectionArea(RadiusAt(caps[fit], 24, 24, 20, "Reference"), 0.1, d) /
+        vtkSphericalCap::SolidAngleFromCapRadius(0.1);
+      errors[fit] += std::abs(share - value) / lights;
+    }
+  }
+  std::printf("ring of sky about a ball overhead, %d lights of 0.1 rad, mean |share - truth|:\n"
+              "  moments' cap %.4f\n",
+    lights, errors[0]);
+  ok &= Check(errors[1] < 0.75 * errors[0], "  nearest cap (< 3/4 of the moments')", errors[1]);
   return ok;
 }
 
@@ -206,14 +314,13 @@ bool CompareWithReference(
   vtkIdType counted = 0, bentCounted = 0;
   for (vtkIdType p = 0; p < truth->GetNumberOfPoints(); ++p)
   {
-    double x[3], ijk[3], pcoords[3];
+    double x[3], pcoords[3];
     truth->GetPoint(p, x);
     int index[3];
     apertures->ComputeStructuredCoordinates(x, index, pcoords);
     for (int a = 0; a < 3; ++a)
     {
       index[a] += pcoords[a] > 0.5 ? 1 : 0;
-      ijk[a] = index[a];
     }
     const double r = RadiusAt(apertures, index[0], index[1], index[2]);
     const double delta = std::abs(r - radius->GetTuple1(p));
@@ -227,7 +334,6 @@ bool CompareWithReference(
       angles += BentAngle(apertures, index[0], index[1], index[2], axis);
       ++bentCounted;
     }
-    (void)ijk;
   }
   std::printf(
     "cloud, aperture grid step %d, %lld points:\n", step, static_cast<long long>(counted));
@@ -337,6 +443,7 @@ int TestVolumeAperturePrecompute(int, char*[])
   auto cloud = Cloud(48);
   ok &= CompareWithReference(cloud, property, 1, 0.06);
   ok &= CompareWithReference(cloud, property, 2, 0.10);
+  ok &= TestNearestCap(property);
   ok &= TestPieces(cloud, property);
   ok &= TestBadInput(property);
   return ok ? 0 : 1;
