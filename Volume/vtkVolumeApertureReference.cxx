@@ -19,6 +19,7 @@
 #include "vtkMatrix3x3.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkSmartPointer.h"
 #include "vtkSphericalCap.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkVolumeExtinction.h"
@@ -246,6 +247,16 @@ double SphereCap(int fit, const std::vector<Ray>& rays, double sum, const double
   return vtkSphericalCap::CapRadiusFromSolidAngle(4.0 * Pi * sum / rays.size());
 }
 
+// A float array of `count` tuples of `components`.
+vtkSmartPointer<vtkFloatArray> NewValues(const char* name, int components, vtkIdType count)
+{
+  auto values = vtkSmartPointer<vtkFloatArray>::New();
+  values->SetName(name);
+  values->SetNumberOfComponents(components);
+  values->SetNumberOfTuples(count);
+  return values;
+}
+
 // The marcher of `input`'s σ, for an aperture grid of every gridStep-th voxel.
 Marcher MakeMarcher(vtkImageData* input, const float* sigma, int gridStep, double maximumDistance)
 {
@@ -376,13 +387,8 @@ int vtkVolumeApertureReference::RequestData(
   output->SetDirectionMatrix(input->GetDirectionMatrix());
   const vtkIdType count = output->GetNumberOfPoints();
   const bool sphere = this->Source == SPHERE;
-  vtkNew<vtkFloatArray> values;
-  values->SetName(sphere ? "ReferenceApertureRadius" : "ReferenceIrradiance");
-  values->SetNumberOfTuples(count);
-  vtkNew<vtkFloatArray> bent;
-  bent->SetName("ReferenceBentNormal");
-  bent->SetNumberOfComponents(3);
-  bent->SetNumberOfTuples(sphere ? count : 0);
+  auto values = NewValues(sphere ? "ReferenceApertureRadius" : "ReferenceIrradiance", 1, count);
+  auto bent = NewValues("ReferenceBentNormal", 3, sphere ? count : 0);
 
   // The light's axis in image axes.
   vtkMatrix3x3* rotation = input->GetDirectionMatrix();
