@@ -225,15 +225,9 @@ void ApertureSweeps::Write(vtkImageData* output, const int outExt[6], const int 
           v = v * this->Dims[a] + (ijk[a] - region[2 * a]);
         }
         const double open = this->Open[v];
-        double b[3] = { this->Bent[3 * v], this->Bent[3 * v + 1], this->Bent[3 * v + 2] };
-        double length = std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
-        if (!(length > 1e-4 * open) || !(length > 0.0))
-        {
-          b[0] = b[1] = 0.0;
-          b[2] = length = 1.0;
-        }
-        double world[3];
-        const double unit[3] = { b[0] / length, b[1] / length, b[2] / length };
+        const double b[3] = { this->Bent[3 * v], this->Bent[3 * v + 1], this->Bent[3 * v + 2] };
+        double unit[3], world[3];
+        vtkVolumeExtinction::MeanDirection(open, b, unit);
         rotation->MultiplyPoint(unit, world);
         bent->SetTypedTuple(i,
           std::array<float, 3>{ static_cast<float>(world[0]), static_cast<float>(world[1]),

@@ -149,17 +149,6 @@ struct Marcher
   }
 };
 
-// The unit direction of ∫ T ω (+z where it vanishes, as in free space).
-void MeanDirection(double sum, const double moment[3], double unit[3])
-{
-  const double length = vtkMath::Norm(moment);
-  const bool some = length > 1e-4 * sum && length > 0.0;
-  for (int a = 0; a < 3; ++a)
-  {
-    unit[a] = some ? moment[a] / length : (a == 2 ? 1.0 : 0.0);
-  }
-}
-
 // The radius about unit `axis` of least Σ |T − cap| over `rays`, and that sum. Opening the cap
 // past a ray changes the sum by 1 − 2T, so the best radius closes where the running change is
 // lowest, halfway between two rays.
@@ -235,16 +224,17 @@ double NearestCap(
   return radius;
 }
 
-// The cap (radius, image-axes unit axis) of a voxel's rays over the whole sphere, by `fit`.
-double SphereCap(int fit, const std::vector<Ray>& rays, double sum, const double moment[3],
-  std::vector<std::pair<double, double>>& order, double axis[3])
+// The cap (radius, image-axes unit axis) of a voxel's `samples` rays over the whole sphere: of
+// their moments, or nearest `rays` (kept for NEAREST only).
+double SphereCap(int fit, int samples, const std::vector<Ray>& rays, double sum,
+  const double moment[3], std::vector<std::pair<double, double>>& order, double axis[3])
 {
-  MeanDirection(sum, moment, axis);
+  vtkVolumeExtinction::MeanDirection(sum, moment, axis);
   if (fit == vtkVolumeApertureReference::NEAREST)
   {
     return NearestCap(rays, axis, order);
   }
-  return vtkSphericalCap::CapRadiusFromSolidAngle(4.0 * Pi * sum / rays.size());
+  return vtkSphericalCap::CapRadiusFromSolidAngle(4.0 * Pi * sum / samples);
 }
 
 // A float array of `count` tuples of `components`.
@@ -403,9 +393,10 @@ int vtkVolumeApertureReference::RequestData(
   vtkApertureSMP::For(0, count,
     [&](vtkIdType begin, vtkIdType end)
     {
+      const bool keep = sphere && this->CapFit == NEAREST;
       std::vector<Ray> rays;
       std::vector<std::pair<double, double>> order;
-      rays.reserve(sphere ? samples : 0);
+      rays.reserve(keep ? samples : 0);
       for (vtkIdType i = begin; i < end; ++i)
       {
         int start[3];
@@ -417,14 +408,14 @@ int vtkVolumeApertureReference::RequestData(
         double sum = 0.0;
         double moment[3] = { 0.0, 0.0, 0.0 };
         rays.clear();
-        marcher.Integrate(start, axis, cosRadius, samples, sum, moment, sphere ? &rays : nullptr);
+        marcher.Integrate(start, axis, cosRadius, samples, sum, moment, keep ? &rays : nullptr);
         if (!sphere)
         {
           values->SetValue(i, static_cast<float>(sum / samples));
           continue;
         }
         double capAxis[3], world[3];
-        const double radius = SphereCap(this->CapFit, rays, sum, moment, order, capAxis);
+        const double radius = SphereCap(this->CapFit, samples, rays, sum, moment, order, capAxis);
         values->SetValue(i, static_cast<float>(radius));
         rotation->MultiplyPoint(capAxis, world);
         bent->SetTuple(i, world);

@@ -288,6 +288,18 @@ void vtkVolumeExtinction::ExtentPoint(const int extent[6], vtkIdType n, int ijk[
 }
 
 //------------------------------------------------------------------------------
+void vtkVolumeExtinction::MeanDirection(double open, const double moment[3], double unit[3])
+{
+  const double length =
+    std::sqrt(moment[0] * moment[0] + moment[1] * moment[1] + moment[2] * moment[2]);
+  const bool some = length > 1e-4 * open && length > 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    unit[a] = some ? moment[a] / length : (a == 2 ? 1.0 : 0.0);
+  }
+}
+
+//------------------------------------------------------------------------------
 double vtkVolumeExtinction::Sample(
   const float* sigma, const int dims[3], double x, double y, double z)
 {

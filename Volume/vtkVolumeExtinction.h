@@ -94,6 +94,12 @@ public:
    * extent point by point need it.
    */
   static void ExtentPoint(const int extent[6], vtkIdType n, int ijk[3]);
+
+  /**
+   * The bent normal of a voxel from Σ T (`open`) and Σ T ω (`moment`): the unit direction of the
+   * moment, or +z where it vanishes against Σ T (free space, a voxel open all round).
+   */
+  static void MeanDirection(double open, const double moment[3], double unit[3]);
 };
 
 #endif

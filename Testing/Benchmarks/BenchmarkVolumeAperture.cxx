@@ -216,7 +216,7 @@ double AngleTo(vtkDataArray* normals, vtkIdType id, const double light[3])
 {
   double n[3];
   normals->GetTuple(id, n);
-  return std::acos(std::max(-1.0, std::min(1.0, vtkMath::Dot(n, light))));
+  return vtkMath::AngleBetweenVectors(n, light);
 }
 
 // Mean |estimate - reference| / mean reference over the visible voxels the reference samples.

@@ -244,7 +244,8 @@ bool TestNearestCap(vtkVolumeProperty* property)
     // Lights spread over the upper hemisphere (elevations 7.5 to 82.5 degrees).
     const double z = (l + 0.5) / lights, phi = 2.39996323 * l, rho = std::sqrt(1.0 - z * z);
     const double light[3] = { rho * std::cos(phi), rho * std::sin(phi), z };
-    auto truth = ReferenceAt(ring, property, surface, 40.0, 0, light);
+    auto truth =
+      ReferenceAt(ring, property, surface, 40.0, vtkVolumeApertureReference::MOMENTS, light);
     const double value = truth->GetPointData()->GetArray("ReferenceIrradiance")->GetTuple1(0);
     for (int fit = 0; fit < 2; ++fit)
     {
