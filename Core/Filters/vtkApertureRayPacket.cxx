@@ -31,7 +31,7 @@ vtkApertureRayPacket::vtkApertureRayPacket(
     this->Ray.mask[lane] = 0xffffffffu;
     this->Ray.flags[lane] = 0;
     this->Ray.dir_x[lane] = this->Ray.dir_y[lane] = this->Ray.dir_z[lane] = 0.0f;
-    this->Valid[lane] = 0;
+    this->Clear(lane);
   }
 }
 

@@ -98,7 +98,14 @@ public:
   /**
    * Lane `lane` casts nothing.
    */
-  void Clear(int lane) { this->Valid[lane] = 0; }
+  void Clear(int lane)
+  {
+    // Inactive lanes hold a finite ray too: Debian's Embree 3.13 keeps its assertions, and its
+    // AVX2 coherent kernels aborted on a packet whose unused lanes were never written.
+    this->Ray.org_x[lane] = this->Ray.org_y[lane] = this->Ray.org_z[lane] = 0.0f;
+    this->Ray.tnear[lane] = this->Ray.tfar[lane] = 0.0f;
+    this->Valid[lane] = 0;
+  }
 
   /**
    * Casts the packet.
