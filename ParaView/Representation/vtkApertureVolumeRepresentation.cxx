@@ -115,6 +115,13 @@ void vtkApertureVolumeRepresentation::SetShadingMode(int mode)
 }
 
 //------------------------------------------------------------------------------
+void vtkApertureVolumeRepresentation::SetInterpolateLight(bool interpolate)
+{
+  this->GetApertureVolumeMapper()->SetInterpolateLight(interpolate);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
 void vtkApertureVolumeRepresentation::SetLightSize(double degrees)
 {
   this->GetApertureVolumeMapper()->SetLightRadius(vtkMath::RadiansFromDegrees(degrees));

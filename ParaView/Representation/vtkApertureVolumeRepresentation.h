@@ -56,6 +56,12 @@ public:
   void SetShadingMode(int mode);
 
   /**
+   * Whether a sample gets the light of its eight aperture voxels' blended cap (off, the default)
+   * or the blend of their light (vtkApertureVolumeMapper::SetInterpolateLight()).
+   */
+  void SetInterpolateLight(bool interpolate);
+
+  /**
    * Angular radius of every light, in degrees. Default 5.73 (0.1 radian, a soft sun).
    */
   void SetLightSize(double degrees);

@@ -113,6 +113,13 @@ def main(plugin, baseline, work, data):
         check(error < 2.0, f"the picture matches the baseline (mean |difference| {error:.3f} < 2 "
               "levels)")
 
+    display.ApertureVolumeInterpolateLight = 1
+    blended_light = shot(view, work, "aperture-volume-soft-light", SIZE)
+    change = abs(blended_light - picture).mean()
+    check(change > 0.05, f"Interpolate Light blends the voxels' light instead of their apertures "
+          f"({change:.3f} levels > 0.05 from off)")
+    display.ApertureVolumeInterpolateLight = 0
+
     display.ApertureVolumeLightSize = 2.0
     opacity.Points = RING_CLEAR
     wide = floor_over_top(shot(view, work, "aperture-volume-wide", SIZE))

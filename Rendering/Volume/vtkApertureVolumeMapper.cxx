@@ -302,7 +302,9 @@ vtkOpenGLShaderProperty* vtkApertureVolumeMapper::ShaderPropertyFor(vtkVolume* v
        << "\n#define APERTURE_SHADING "
        << (this->ShadingMode == SMOOTHSTEP ? "sphericalCapSmoothstep" : "sphericalCapExact") << "\n"
        << (vol->GetProperty()->HasGradientOpacity() ? "#define APERTURE_GRADIENT_OPACITY\n" : "")
-       << (this->SkyEnvironment ? "#define APERTURE_SKY_ENVIRONMENT\n" : "") << vtkApertureVolumeFS;
+       << (this->SkyEnvironment ? "#define APERTURE_SKY_ENVIRONMENT\n" : "")
+       << (this->InterpolateLight ? "#define APERTURE_INTERPOLATE_LIGHT\n" : "")
+       << vtkApertureVolumeFS;
   auto* user = vtkOpenGLShaderProperty::SafeDownCast(vol->GetShaderProperty());
   if (!this->Shaders)
   {
@@ -330,6 +332,7 @@ void vtkApertureVolumeMapper::SetLightUniforms(vtkRenderer* ren, vtkVolume* vol)
   uniforms->SetUniform3f("apertureTextureScale", this->TextureScale);
   uniforms->SetUniform3f("apertureTextureShift", this->TextureShift);
   uniforms->SetUniform3f("apertureGridSize", this->GridSize);
+  uniforms->SetUniformf("apertureSurfaceOffset", static_cast<float>(this->SurfaceOffset));
 
   // World directions to the volume's data axes: the inverse of its matrix, made unit.
   vtkNew<vtkMatrix4x4> inverse;
@@ -496,6 +499,8 @@ void vtkApertureVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ShadingMode: " << (this->ShadingMode == SMOOTHSTEP ? "SMOOTHSTEP" : "EXACT")
      << "\n";
+  os << indent << "InterpolateLight: " << (this->InterpolateLight ? "On" : "Off") << "\n";
+  os << indent << "SurfaceOffset: " << this->SurfaceOffset << "\n";
   os << indent << "LightRadius: " << this->LightRadius << "\n";
   os << indent << "SkyColor: (" << this->SkyColor[0] << ", " << this->SkyColor[1] << ", "
      << this->SkyColor[2] << ")\n";

@@ -20,7 +20,12 @@
 //     radiance 1 draws what the uniform sky draws;
 //  5. a piece of a volume (as an MPI rank draws it) with its halo as the aperture source draws
 //     what the whole volume's apertures draw on it, on a coarser aperture grid that the piece
-//     starts between two points of.
+//     starts between two points of;
+//  6. between a voxel whose cap holds the light and one whose cap misses it, the light goes
+//     linearly from one's to the other's (InterpolateLight on), against vtkSphericalCap; with it
+//     off, the interpolated cap holds more of the light;
+//  7. the surface of opaque matter takes the light one aperture voxel toward the eye, or, with
+//     SurfaceOffset 0, that of where the ray stops.
 
 #include "vtkApertureVolumeMapper.h"
 #include "vtkCallbackCommand.h"
@@ -514,6 +519,107 @@ bool TestUnusable()
   ok &= Report(warnings == 1, "apertures that do not fit: warnings (one)", warnings, 1);
   return ok;
 }
+
+// The light, by vtkSphericalCap, of an aperture about +z of radius r (as the texture's byte holds
+// it) under a sky of 0.3 and a light of 0.6 at 60 degrees from +z, of radius 0.3.
+double SlantedLight(double r)
+{
+  r = std::lround(r / Pi * 255.0) / 255.0 * Pi;
+  const double lightRadius = 0.3;
+  return 0.3 * std::pow(std::sin(0.5 * r), 2) +
+    0.6 * vtkSphericalCap::IntersectionArea(r, lightRadius, Pi / 3.0) /
+    vtkSphericalCap::SolidAngleFromCapRadius(lightRadius);
+}
+
+// A mapper of the volume whose apertures are about +z, of radius radiusAt(i) at x index i, under
+// a light of radius 0.3.
+vtkSmartPointer<vtkApertureVolumeMapper> SlantedMapper(
+  vtkImageData* volume, const std::function<double(int)>& radiusAt)
+{
+  const double up[3] = { 0.0, 0.0, 1.0 };
+  auto mapper = ConstantMapper(volume, up, 0.0);
+  auto* radius = mapper->GetApertureData()->GetPointData()->GetArray("ApertureRadius");
+  const int n = volume->GetDimensions()[0];
+  for (vtkIdType i = 0; i < volume->GetNumberOfPoints(); ++i)
+  {
+    radius->SetTuple1(i, radiusAt(static_cast<int>(i % n)));
+  }
+  mapper->SetLightRadius(0.3);
+  return mapper;
+}
+
+// The scene's light at 60 degrees from +z toward +x and its camera in parallel projection.
+void SlantedScene(Scene& scene)
+{
+  const double toward[3] = { std::sin(Pi / 3.0), 0.0, std::cos(Pi / 3.0) };
+  scene.AddLight(toward, 1.0);
+  scene.Renderer->GetActiveCamera()->ParallelProjectionOn();
+  scene.Renderer->GetActiveCamera()->SetParallelScale(0.5);
+}
+
+// 6. Apertures about +z, wide (2 rad: the light whole) and narrow (0.3 rad: none of it) by turns
+// along x, seen along -z in parallel projection: each pixel of a row is one sample between two
+// voxels (texture x = 7 data x on a grid of 8).
+bool TestLightInterpolation()
+{
+  const int n = 8;
+  const double radii[2] = { 2.0, 0.3 };
+  auto volume = MakeVolume(n, 1, [](double, double, double) { return 1.0; });
+  auto mapper = SlantedMapper(volume, [&](int i) { return radii[i % 2]; });
+  Scene scene(mapper, WhiteProperty(1e-4));
+  SlantedScene(scene);
+  bool ok = true;
+  for (bool interpolate : { true, false })
+  {
+    mapper->SetInterpolateLight(interpolate);
+    scene.Window->Render();
+    vtkNew<vtkUnsignedCharArray> row;
+    scene.Window->GetPixelData(0, 32, 63, 32, 0, row);
+    double worst = 0.0;
+    for (int x = 0; x < 64; ++x)
+    {
+      const double u = (x + 0.5) / 64.0 * (n - 1);
+      const double w = u - std::floor(u);
+      const int even = static_cast<int>(std::floor(u)) % 2 == 0;
+      const double expected =
+        (1.0 - w) * SlantedLight(radii[1 - even]) + w * SlantedLight(radii[even]);
+      worst = std::max(worst, std::abs(row->GetValue(3 * x) / 255.0 - expected));
+    }
+    ok &= interpolate
+      ? Report(worst <= 3.0 / 255.0, "light interpolated: largest |pixel - blend of lights|", worst,
+          3.0 / 255.0)
+      : Report(worst >= 0.1, "caps interpolated: largest |pixel - blend of lights| (at least)",
+          worst, 0.1);
+  }
+  return ok;
+}
+
+// 7. Matter up to x = 4/7 on a grid of 8, seen from +x; apertures narrow up to x index 4 and wide
+// beyond: read in place, the surface gets the narrow caps' light, read one voxel toward the eye
+// mostly the wide ones'.
+bool TestSurfaceOffset()
+{
+  const int n = 8;
+  auto volume = MakeVolume(n, 1, [](double x, double, double) { return x < 0.5 ? 1.0 : 0.0; });
+  auto mapper = SlantedMapper(volume, [](int i) { return i <= 4 ? 0.3 : 2.0; });
+  Scene scene(mapper, WhiteProperty(1e-4));
+  SlantedScene(scene);
+  scene.Renderer->GetActiveCamera()->SetPosition(4.0, 0.5, 0.5);
+  scene.Renderer->GetActiveCamera()->SetViewUp(0.0, 0.0, 1.0);
+  scene.Renderer->ResetCameraClippingRange();
+  mapper->AutoAdjustSampleDistancesOff();
+  mapper->SetSampleDistance(0.01); // the ray stops within a tenth of a voxel of the surface
+  mapper->SetSurfaceOffset(0.0);
+  const double inPlace = scene.Pixel();
+  mapper->SetSurfaceOffset(1.0);
+  const double outside = scene.Pixel();
+  bool ok = Report(std::abs(inPlace - SlantedLight(0.3)) <= 3.0 / 255.0,
+    "read in place: |pixel - the narrow caps' light|", std::abs(inPlace - SlantedLight(0.3)),
+    3.0 / 255.0);
+  const double middle = 0.5 * (SlantedLight(0.3) + SlantedLight(2.0));
+  ok &= Report(outside > middle, "read a voxel toward the eye: pixel (above)", outside, middle);
+  return ok;
+}
 }
 
 int TestApertureVolumeMapper(int, char*[])
@@ -529,5 +635,7 @@ int TestApertureVolumeMapper(int, char*[])
   ok &= TestUnusable();
   ok &= TestEnvironmentSky();
   ok &= TestPiece();
+  ok &= TestLightInterpolation();
+  ok &= TestSurfaceOffset();
   return ok ? 0 : 1;
 }

@@ -13,7 +13,7 @@
 // declared ahead of this code: the apertures (apertureVolume, RGBA8: the bent normal as
 // (n + 1)/2, the radius as r/pi), read at the volume's texture coordinates times
 // apertureTextureScale plus apertureTextureShift (the aperture grid may be coarser, of
-// apertureGridSize voxels); up to 8
+// apertureGridSize voxels), read apertureSurfaceOffset aperture voxels toward the eye; up to 8
 // lights (apertureLightCount): toward each in the volume's data axes (apertureLightAxis), its cap
 // (apertureLightCap: radius, and the sine and cosine of half of it) and its colour times
 // intensity times the property's diffuse (apertureLightColor); the sky's colour times the
@@ -71,18 +71,9 @@ float apertureLightShare(sphericalCapCap aperture, sphericalCapCap light)
   return sphericalCapLens(lensCase, aperture, light, hc, hs, moment) / areaL;
 }
 
-vec4 computeLighting(vec4 color, int component, float label)
+// The light one aperture voxel, as the texture holds it, lets through.
+vec3 apertureLight(vec4 stored)
 {
-  // One aperture voxel toward the eye: the surface layer of opaque matter takes the light of its
-  // outside, as the eye sees it, instead of banding with the depth a ray stops at in the layer.
-  vec3 toEye = -g_dirStep * apertureTextureScale * apertureGridSize;
-  float toEyeLength = length(toEye);
-  vec3 at = g_dataPos * apertureTextureScale + apertureTextureShift;
-  if (toEyeLength > 0.0)
-  {
-    at += toEye / (toEyeLength * apertureGridSize);
-  }
-  vec4 stored = texture(apertureVolume, at);
   vec3 bent = stored.xyz * 2.0 - 1.0;
   float length = length(bent);
   sphericalCapCap aperture = sphericalCapMakeCap(
@@ -94,7 +85,53 @@ vec4 computeLighting(vec4 color, int component, float label)
     light += apertureLightColor[i] *
       apertureLightShare(aperture, sphericalCapCap(apertureLightAxis[i], cap.x, cap.y, cap.z));
   }
-  vec4 finalColor = vec4(color.rgb * light, color.a);
+  return light;
+}
+
+#ifdef APERTURE_INTERPOLATE_LIGHT
+// The light of the eight aperture voxels about `at`, trilinear: between a wide cap and a narrow
+// one the light goes from one's to the other's, where an interpolated cap of middle size would
+// still hold a small light whole.
+vec3 apertureSampleLight(vec3 at)
+{
+  vec3 grid = at * apertureGridSize - 0.5;
+  vec3 base = floor(grid);
+  vec3 w = grid - base;
+  ivec3 last = ivec3(apertureGridSize) - 1;
+  vec3 light = vec3(0.0);
+  for (int c = 0; c < 8; ++c)
+  {
+    ivec3 corner = ivec3(c & 1, (c >> 1) & 1, c >> 2);
+    vec3 axisWeights = mix(1.0 - w, w, vec3(corner));
+    float weight = axisWeights.x * axisWeights.y * axisWeights.z;
+    if (weight > 0.0)
+    {
+      ivec3 texel = clamp(ivec3(base) + corner, ivec3(0), last);
+      light += weight * apertureLight(texelFetch(apertureVolume, texel, 0));
+    }
+  }
+  return light;
+}
+#else
+vec3 apertureSampleLight(vec3 at)
+{
+  return apertureLight(texture(apertureVolume, at));
+}
+#endif
+
+vec4 computeLighting(vec4 color, int component, float label)
+{
+  // Toward the eye (by default one aperture voxel): the surface layer of opaque matter takes the
+  // light of its outside, as the eye sees it, instead of banding with the depth a ray stops at in
+  // the layer.
+  vec3 toEye = -g_dirStep * apertureTextureScale * apertureGridSize;
+  float toEyeLength = length(toEye);
+  vec3 at = g_dataPos * apertureTextureScale + apertureTextureShift;
+  if (toEyeLength > 0.0)
+  {
+    at += apertureSurfaceOffset * toEye / (toEyeLength * apertureGridSize);
+  }
+  vec4 finalColor = vec4(color.rgb * apertureSampleLight(at), color.a);
 #ifdef APERTURE_GRADIENT_OPACITY
   vec4 gradient = computeGradient(g_dataPos, component, in_volume[0], 0);
   if (gradient.w >= 0.0 && label == 0.0)
