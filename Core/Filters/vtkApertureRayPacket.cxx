@@ -30,6 +30,7 @@ vtkApertureRayPacket::vtkApertureRayPacket(
     this->Ray.time[lane] = 0.0f;
     this->Ray.mask[lane] = 0xffffffffu;
     this->Ray.flags[lane] = 0;
+    this->Ray.id[lane] = 0;
     this->Ray.dir_x[lane] = this->Ray.dir_y[lane] = this->Ray.dir_z[lane] = 0.0f;
     this->Clear(lane);
   }

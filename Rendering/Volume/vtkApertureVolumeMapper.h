@@ -19,14 +19,14 @@
  *
  *   colour × (ambient × sky × A/4π + diffuse × Σ light × |aperture ∩ light cap| / |light cap|),
  *
- * A the aperture's solid angle: the
- * share of each light's cap that the aperture holds (its intersection exact or by the paper's
- * smoothstep, the GLSL twin of vtkSphericalCap), 1 in free space. A medium has no surface to turn
- * toward a light, so there is no Lambert or specular term; vtkVolumeApertureReference's Monte-Carlo
- * irradiance is what this estimates. Every switched-on light of the renderer (up to 8) is an area
- * light of angular radius LightRadius toward it (a positional light from its direction to the
- * volume's centre); the sky is uniform, of SkyColor, or an HDR environment (SetSkyEnvironment()),
- * where A/4π becomes the environment's radiance over the aperture over 4π.
+ * A the aperture's solid angle: the share of each light's cap that the aperture holds (its
+ * intersection exact or by the paper's smoothstep, the GLSL twin of vtkSphericalCap), 1 in free
+ * space. A medium has no surface to turn toward a light, so there is no Lambert or specular term;
+ * vtkVolumeApertureReference's Monte-Carlo irradiance is what this estimates. Every switched-on
+ * light of the renderer (up to 8) is an area light of angular radius LightRadius toward it (a
+ * positional light from its direction to the volume's centre); the sky is uniform, of SkyColor,
+ * or an HDR environment (SetSkyEnvironment()), where A/4π becomes the environment's radiance over
+ * the aperture over 4π.
  *
  * Everything else is VTK's: transfer functions, composite blending, cropping, clipping planes,
  * masks, the interactive sample-distance reduction, the volume's transform. Apertures come from
@@ -95,7 +95,7 @@ public:
    * saturates. On: each of the eight voxels about the sample lights it through its own cap and
    * the sample gets the trilinear blend of their light, as vtkVolumeApertureReference's
    * irradiance is interpolated: nearer the reference, above all with SurfaceOffset 0, at eight
-   * texture reads and shadings a sample (1.2-1.9 times the frame, more with many lights).
+   * texture reads and shadings a sample (the frame costs, docs/volumes.md).
    */
   vtkSetMacro(InterpolateLight, bool);
   vtkGetMacro(InterpolateLight, bool);
@@ -109,7 +109,8 @@ public:
    * place (0), what vtkVolumeApertureReference estimates, it bands with the depth each ray stops
    * at within the layer (the wood grain of volume rendering) and, with InterpolateLight on, is
    * nearer the reference (docs/volumes.md); the price of 1 is a cast shadow a voxel softer and
-   * lit sides brighter.
+   * lit sides brighter. Clamped to [0, 2]: further out, a sample takes light from what is not
+   * its surface.
    */
   vtkSetClampMacro(SurfaceOffset, double, 0.0, 2.0);
   vtkGetMacro(SurfaceOffset, double);

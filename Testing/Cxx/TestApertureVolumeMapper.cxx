@@ -544,6 +544,7 @@ vtkSmartPointer<vtkApertureVolumeMapper> SlantedMapper(
   {
     radius->SetTuple1(i, radiusAt(static_cast<int>(i % n)));
   }
+  radius->Modified();
   mapper->SetLightRadius(0.3);
   return mapper;
 }
@@ -575,7 +576,7 @@ bool TestLightInterpolation()
     scene.Window->Render();
     vtkNew<vtkUnsignedCharArray> row;
     scene.Window->GetPixelData(0, 32, 63, 32, 0, row);
-    double worst = 0.0;
+    double worst = 0.0, brightest = -1.0;
     for (int x = 0; x < 64; ++x)
     {
       const double u = (x + 0.5) / 64.0 * (n - 1);
@@ -583,13 +584,15 @@ bool TestLightInterpolation()
       const int even = static_cast<int>(std::floor(u)) % 2 == 0;
       const double expected =
         (1.0 - w) * SlantedLight(radii[1 - even]) + w * SlantedLight(radii[even]);
-      worst = std::max(worst, std::abs(row->GetValue(3 * x) / 255.0 - expected));
+      const double above = row->GetValue(3 * x) / 255.0 - expected;
+      worst = std::max(worst, std::abs(above));
+      brightest = std::max(brightest, above);
     }
     ok &= interpolate
       ? Report(worst <= 3.0 / 255.0, "light interpolated: largest |pixel - blend of lights|", worst,
           3.0 / 255.0)
-      : Report(worst >= 0.1, "caps interpolated: largest |pixel - blend of lights| (at least)",
-          worst, 0.1);
+      : Report(brightest >= 0.1, "caps interpolated: largest pixel - blend of lights (at least)",
+          brightest, 0.1);
   }
   return ok;
 }

@@ -12,8 +12,9 @@ shoulder (angular radius --light-radius), white, Diffuse 1 and no ambient or spe
 one opacity ramp (--ramp LOW:HIGH, opaque at HIGH over one voxel; by default 20% to 50% of the
 scalar range) and one sample distance. Prints the mean |picture − reference| over the pixels that
 either draws, in levels and over the reference's mean there, for the mapper (as set by default),
-the mapper blending its voxels' light rather than their caps (InterpolateLight on), both reading
-their apertures in place (SurfaceOffset 0), the voxels' caps and no shadow.
+the mapper blending its voxels' light rather than their caps (InterpolateLight on), the mapper
+reading its apertures in place (SurfaceOffset 0) with light and with caps blended, the voxels' caps
+and no shadow.
 
 The build's Python package must be on the path (PYTHONPATH=build/lib/python3.11/dist-packages).
 """
@@ -178,7 +179,8 @@ def main():
     parser.add_argument("--elevation", type=float, default=0.0, help="camera tilt (degrees)")
     parser.add_argument("--check", action="store_true",
                         help="fail unless the voxels' caps are much nearer the reference than "
-                        "no shadow and the mapper read in place about as near as they are")
+                        "no shadow, the mapper blending light and reading in place is about as "
+                        "near as they are, and blending light is nearer than blending caps")
     args = parser.parse_args()
     size = [int(v) for v in args.size.split("x")]
     volume = read_volume(args.volume)
@@ -255,12 +257,12 @@ def main():
         print(f"{name} against the reference over {drawn_pixels.mean():.0%} of the picture: mean "
               f"|difference| {mean:.1f} levels, {errors[name]:.1%} of the reference's mean")
     caps = errors["the voxels' caps drawn as the reference"]
-    in_place = errors["the mapper, light interpolated, read in place (SurfaceOffset 0)"]
+    both = errors["the mapper, light interpolated, read in place (SurfaceOffset 0)"]
     checks = (
         (caps < 0.25 * errors["no shadow (light 1 everywhere) drawn so"],
          "the caps' light is not nearer the reference than no shadow at all"),
         # Read in place, the mapper blends the voxels' light as the emission volume does.
-        (in_place < 1.1 * caps, "the mapper read in place is further from the reference than the "
+        (both < 1.1 * caps, "the mapper read in place is further from the reference than the "
          "voxels' caps"),
         (errors["the mapper, light interpolated (InterpolateLight on)"] < errors["the mapper"],
          "blending the voxels' light is not nearer the reference than blending their caps"))

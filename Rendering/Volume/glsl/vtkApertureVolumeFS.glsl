@@ -1,8 +1,9 @@
 // ApertureLighting: computeLighting() of VTK's GPU volume ray caster, shaded by each sample's
 // aperture, for vtkApertureVolumeMapper. It takes the place of VTK's lighting declaration, after
 // vtkSphericalCap::GetGLSLConstants() and vtkSphericalCapGLSL, with APERTURE_SHADING (the
-// vtkSphericalCap model: EXACT or SMOOTHSTEP) and, where the volume property has a gradient
-// opacity, APERTURE_GRADIENT_OPACITY defined.
+// vtkSphericalCap model: EXACT or SMOOTHSTEP) and, where they apply, APERTURE_GRADIENT_OPACITY
+// (the volume property has a gradient opacity), APERTURE_SKY_ENVIRONMENT (an HDR sky) and
+// APERTURE_INTERPOLATE_LIGHT (the eight voxels' light blended) defined.
 //
 // A sample inside a medium has no surface to turn toward a light: it gets the part of each
 // light's cap that its aperture holds (the light's visible share, 1 in free space, as
