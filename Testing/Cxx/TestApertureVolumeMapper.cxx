@@ -174,6 +174,18 @@ vtkSmartPointer<vtkApertureVolumeMapper> ConstantMapper(
   return mapper;
 }
 
+// A radius as the texture holds it: a byte of r/pi.
+double TextureRadius(double r)
+{
+  return std::round(r / Pi * 255.0) / 255.0 * Pi;
+}
+
+// The uniform sky's share of a cap of radius r, A/4pi.
+double SkyShare(double r)
+{
+  return vtkSphericalCap::SolidAngleFromCapRadius(r) / (4.0 * Pi);
+}
+
 // A random unit bent normal and radius (0.05 pi to pi), and the normal as the texture holds it
 // (bytes of (n + 1)/2), made unit; the radius is a byte of r/pi already.
 void RandomAperture(double bent[3], double quantized[3], double& radius)
@@ -183,7 +195,7 @@ void RandomAperture(double bent[3], double quantized[3], double& radius)
     bent[a] = vtkMath::Gaussian();
   }
   vtkMath::Normalize(bent);
-  radius = std::round(vtkMath::Random(0.05, 1.0) * 255.0) / 255.0 * Pi;
+  radius = TextureRadius(vtkMath::Random(0.05, 1.0) * Pi);
   for (int a = 0; a < 3; ++a)
   {
     quantized[a] = std::round(0.5 * (bent[a] + 1.0) * 255.0) / 255.0 * 2.0 - 1.0;
@@ -215,7 +227,7 @@ bool TestTwin()
       scene.Volume->SetMapper(mapper);
       scene.Renderer->RemoveAllLights();
       const int lightCount = c % 2 == 0 ? 1 : 2;
-      double expected = 0.3 * std::pow(std::sin(0.5 * radius), 2);
+      double expected = 0.3 * SkyShare(radius);
       for (int l = 0; l < lightCount; ++l)
       {
         double toward[3] = { vtkMath::Gaussian(), vtkMath::Gaussian(), vtkMath::Gaussian() };
@@ -524,9 +536,9 @@ bool TestUnusable()
 // it) under a sky of 0.3 and a light of 0.6 at 60 degrees from +z, of radius 0.3.
 double SlantedLight(double r)
 {
-  r = std::lround(r / Pi * 255.0) / 255.0 * Pi;
+  r = TextureRadius(r);
   const double lightRadius = 0.3;
-  return 0.3 * std::pow(std::sin(0.5 * r), 2) +
+  return 0.3 * SkyShare(r) +
     0.6 * vtkSphericalCap::IntersectionArea(r, lightRadius, Pi / 3.0) /
     vtkSphericalCap::SolidAngleFromCapRadius(lightRadius);
 }
