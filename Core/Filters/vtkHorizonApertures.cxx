@@ -171,6 +171,27 @@ public:
 
   void Get(vtkIdType o, float n[3]) const
   {
+    this->GetUnnormalized(o, n);
+    const float inverse =
+      this->Full ? 1.0f : 1.0f / std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (int c = 0; c < 3; ++c)
+    {
+      n[c] *= inverse;
+    }
+  }
+
+  // The slope of the tangent plane along the unit direction (x, y), −(n_x x + n_y y) / n_z, from
+  // the normal's direction alone (no square root).
+  double GetSlope(vtkIdType o, double x, double y) const
+  {
+    float n[3];
+    this->GetUnnormalized(o, n);
+    return -(n[0] * x + n[1] * y) / n[2];
+  }
+
+private:
+  void GetUnnormalized(vtkIdType o, float n[3]) const
+  {
     if (this->Full)
     {
       std::copy(&this->Full[3 * o], &this->Full[3 * o] + 3, n);
@@ -179,16 +200,11 @@ public:
     std::uint32_t word;
     std::memcpy(&word, &this->Packed[o], sizeof(word));
     const float step = 1.0f / 32767.0f;
-    const float u = (float(word & 0xffffu) - 32767.0f) * step;
-    const float v = (float(word >> 16) - 32767.0f) * step;
-    const float z = std::max(1.0f - std::abs(u) - std::abs(v), 0.0f);
-    const float inverse = 1.0f / std::sqrt(u * u + v * v + z * z);
-    n[0] = u * inverse;
-    n[1] = v * inverse;
-    n[2] = z * inverse;
+    n[0] = (float(word & 0xffffu) - 32767.0f) * step;
+    n[1] = (float(word >> 16) - 32767.0f) * step;
+    n[2] = std::max(1.0f - std::abs(n[0]) - std::abs(n[1]), 0.0f);
   }
 
-private:
   float* Full;
   float* Packed;
 };
@@ -218,21 +234,15 @@ void ComputeNormals(const Field& f, const NormalStore& normals, unsigned char* v
 }
 
 // atan(x) within 5e-10, about three times as fast as the C library's (which took 12% of a sweep):
-// reduced to |t| <= tan(π/8), where 10 terms of the series suffice.
+// reduced to |t| <= tan(π/8), where 10 terms of the series suffice. Without branches, so that
+// loops over samples vectorise: t = −1/y above tan(3π/8), (y − 1)/(y + 1) above tan(π/8).
 inline double FastAtan(double x)
 {
   const double y = std::abs(x);
-  double base = 0.0, t = y;
-  if (y > 2.414213562373095) // tan(3π/8)
-  {
-    base = 0.5 * Pi;
-    t = -1.0 / y;
-  }
-  else if (y > 0.41421356237309503) // tan(π/8)
-  {
-    base = 0.25 * Pi;
-    t = (y - 1.0) / (y + 1.0);
-  }
+  const bool high = y > 2.414213562373095, middle = y > 0.41421356237309503;
+  const double below = y - 1.0, above = y + 1.0; // both, so that only values are selected
+  const double base = high ? 0.5 * Pi : (middle ? 0.25 * Pi : 0.0);
+  const double t = (high ? -1.0 : (middle ? below : y)) / (high ? y : (middle ? above : 1.0));
   const double t2 = t * t;
   double series = 1.0 / 19.0;
   for (const double c : { -1.0 / 17.0, 1.0 / 15.0, -1.0 / 13.0, 1.0 / 11.0, -1.0 / 9.0, 1.0 / 7.0,
@@ -240,8 +250,7 @@ inline double FastAtan(double x)
   {
     series = series * t2 + c;
   }
-  const double a = base - t * series;
-  return x < 0.0 ? -a : a;
+  return std::copysign(base - t * series, x);
 }
 
 // What elevations 0 … a of a sector hold (given sin a, cos a): solid angle and ∫ω dω. `chord`
@@ -254,6 +263,13 @@ inline void Deficit(
   deficit[1] += horizontal * chord[0];
   deficit[2] += horizontal * chord[1];
   deficit[3] += 0.5 * dphi * sinA * sinA;
+}
+
+// What elevations 0 … atan(top) of a sector hold (Deficit()), from the slope `top`.
+inline void SlopeDeficit(double dphi, const double chord[2], double top, double deficit[4])
+{
+  const double cosA = 1.0 / std::sqrt(1.0 + top * top);
+  Deficit(dphi, chord, FastAtan(top), top * cosA, cosA, deficit);
 }
 
 // What a sector adds per texel: its width, ∫ (cos φ, sin φ) dφ over it, its middle direction.
@@ -418,16 +434,19 @@ struct Scratch
 {
   std::vector<double> Occluder; // interpolated height; NaN: does not occlude
   std::vector<double> Receiver; // the receiving texel's height; NaN: none
+  std::vector<double> Tangent;  // the receiver's tangent plane's slope along Sectors[0]'s middle
   // Out: steepest slope per sample step, per sector of the pass (0, 1), and those of the negated
   // samples (2, 3), which give the lowest elevations.
   std::vector<double> Slope[4];
+  // Out: what the pass's sectors take from each receiver's hemisphere, Deficit()'s four sums.
+  std::vector<float> Deficit[4];
   std::vector<vtkIdType> Hull;
   // Suffix hulls of the previous block: a stack, and per sample of the block, where its push
   // wrote (-1: not pushed), what it overwrote, the stack size before it, and the highest
   // occluder of its suffix.
   std::vector<vtkIdType> Suffix, Position, Overwritten, Size;
   std::vector<double> Highest;
-  vtkIdType HullSize = 0, SuffixFirst = 0, SuffixSize = 0;
+  vtkIdType SuffixFirst = 0, SuffixSize = 0;
 
   // Sizes the buffers for a pass's groups, when a thread first takes one.
   void Fit(vtkIdType lines, vtkIdType length, vtkIdType window, int sectors, bool lower)
@@ -436,9 +455,13 @@ struct Scratch
     {
       return;
     }
-    for (auto* v : { &this->Occluder, &this->Receiver, &this->Slope[0] })
+    for (auto* v : { &this->Occluder, &this->Receiver, &this->Tangent, &this->Slope[0] })
     {
       v->resize(lines * length);
+    }
+    for (auto& v : this->Deficit)
+    {
+      v.resize(lines * length);
     }
     this->Slope[1].resize(sectors == 2 ? lines * length : 0);
     this->Slope[2].resize(lower ? lines * length : 0);
@@ -467,7 +490,7 @@ public:
   void Run(const double* z, const double* zr, double* slope, vtkIdType n, bool reversed);
 
 private:
-  double Prefix(const Viewpoint& view, bool occludes);
+  double Prefix(const Viewpoint& view, bool occludes, vtkIdType& size);
   void BuildSuffixes(const Samples& z, vtkIdType first, vtkIdType last);
   void Undo(vtkIdType s);
 
@@ -494,21 +517,24 @@ void LineSweep::Run(const double* zs, const double* zrs, double* slopes, vtkIdTy
   const vtkIdType step = reversed ? -1 : 1, start = reversed ? n - 1 : 0;
   const Samples z{ zs + start, step }, zr{ zrs + start, step };
   bool suffixes = false;
-  for (vtkIdType k = 0, offset = 0; k < n;
-       ++k, offset = offset + 1 == this->Window ? 0 : offset + 1)
+  // Locals, not members: the hull's stores could overwrite a member of the same type, so that
+  // each push went through memory (a fifth of the sweep's time).
+  const vtkIdType window = this->Window;
+  vtkIdType hullSize = 0;
+  for (vtkIdType k = 0, offset = 0; k < n; ++k, offset = offset + 1 == window ? 0 : offset + 1)
   {
     if (offset == 0)
     {
-      this->S.HullSize = 0; // a new block: its own hull, and the suffixes of the block before
+      hullSize = 0; // a new block: its own hull, and the suffixes of the block before
       if (k > 0)
       {
-        this->BuildSuffixes(z, k - this->Window, k);
+        this->BuildSuffixes(z, k - window, k);
         suffixes = true;
       }
     }
     else if (suffixes)
     {
-      this->Undo(k - this->Window - 1);
+      this->Undo(k - window - 1);
     }
     const bool occludes = !std::isnan(z[k]), receives = !std::isnan(zr[k]);
     if (!occludes && !receives)
@@ -516,7 +542,7 @@ void LineSweep::Run(const double* zs, const double* zrs, double* slopes, vtkIdTy
       continue;
     }
     const Viewpoint view{ z, k, receives ? zr[k] : z[k] };
-    double best = this->Prefix(view, occludes);
+    double best = this->Prefix(view, occludes, hullSize);
     if (receives && suffixes && best < this->SuffixBound(view))
     {
       const vtkIdType* stack = this->S.Suffix.data();
@@ -528,12 +554,12 @@ void LineSweep::Run(const double* zs, const double* zrs, double* slopes, vtkIdTy
   }
 }
 
-// The steepest slope from a viewpoint to the hull of its block so far; an occluding one is
-// pushed onto it, after popping the points under its tangent (the top is then the tangent).
-double LineSweep::Prefix(const Viewpoint& view, bool occludes)
+// The steepest slope from a viewpoint to the hull of its block so far (`size` points); an
+// occluding one is pushed onto it, after popping the points under its tangent (the top is then
+// the tangent).
+double LineSweep::Prefix(const Viewpoint& view, bool occludes, vtkIdType& size)
 {
   vtkIdType* hull = this->S.Hull.data();
-  vtkIdType& size = this->S.HullSize;
   if (!occludes)
   {
     return Tangent(view, size, [hull](vtkIdType i) { return hull[i]; });
@@ -595,6 +621,47 @@ void LineSweep::Undo(vtkIdType k)
   }
 }
 
+// What the sweeps give a receiver in one pass: its steepest slopes in world units (one per
+// sector, then one per sector of the negated samples; NoSample where not swept), what the
+// pass's sectors take from its hemisphere (Deficit()'s sums).
+struct Received
+{
+  const Scratch& S;
+  vtkIdType At;
+  double PerStep;
+
+  double Slope(int q) const
+  {
+    return this->S.Slope[q].empty() ? NoSample : this->S.Slope[q][this->At] * this->PerStep;
+  }
+  float Deficit(int c) const { return this->S.Deficit[c][this->At]; }
+};
+
+// Scratch::Deficit of samples [first, first + n) from their slopes and tangents, in a loop
+// without branches that the compiler vectorises. Count: the pass's sectors.
+template <int Count>
+void AddDeficits(const Lines& l, Scratch& s, vtkIdType first, vtkIdType n)
+{
+  const double perStep = 1.0 / l.Delta;
+  const double* slopes[2] = { &s.Slope[0][first], &s.Slope[Count - 1][first] };
+  const double* tangent = &s.Tangent[first];
+  float* out[4] = { &s.Deficit[0][first], &s.Deficit[1][first], &s.Deficit[2][first],
+    &s.Deficit[3][first] };
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    double deficit[4] = { 0.0, 0.0, 0.0, 0.0 };
+    for (int q = 0; q < Count; ++q) // the opposite sector's tangent plane falls the other way
+    {
+      const double top = std::max(slopes[q][k] * perStep, q == 0 ? tangent[k] : -tangent[k]);
+      SlopeDeficit(l.Sectors[q].Dphi, l.Sectors[q].Chord, top, deficit);
+    }
+    for (int c = 0; c < 4; ++c)
+    {
+      out[c][k] = static_cast<float>(deficit[c]);
+    }
+  }
+}
+
 // A group of adjacent lines [First, Last) over the major indices where one of them meets the
 // grid. Sample k of every line is at major index MajorAt(k), in sweep order.
 class Group
@@ -609,8 +676,7 @@ public:
   // Fills the scratch with the heights of the group's samples and receivers.
   void Gather(Scratch& s) const;
 
-  // Calls sink(output index, steepest slopes in world units: one per sector, then one per
-  // sector of the negated samples, NoSample where not swept) for every receiver.
+  // Calls sink(output index, Received) for every receiver.
   template <typename Sink>
   void Scatter(const Scratch& s, const Sink& sink) const;
 
@@ -682,16 +748,16 @@ void Group::Gather(Scratch& s) const
       vtkIdType i, j;
       l.ToIJ(m, minor, i, j);
       const vtkIdType o = this->F.OutputIndex(i, j);
-      if (o >= 0)
+      if (o < 0)
       {
-        s.Receiver[at] = s.Occluder[at];
+        continue;
       }
-      if (o >= 0 && std::isnan(s.Occluder[at])) // the texel's tangent plane at the sample
+      s.Tangent[at] = this->Normals.GetSlope(o, l.Sectors[0].Cos, l.Sectors[0].Sin);
+      s.Receiver[at] = s.Occluder[at];
+      if (std::isnan(s.Occluder[at])) // the texel's tangent plane at the sample
       {
-        float normal[3];
-        this->Normals.Get(o, normal);
-        const double rise = -normal[1 - l.Major] / normal[2] * this->F.Spacing[1 - l.Major];
-        s.Receiver[at] = this->F.Heights[t] + offset * rise;
+        const double rise = this->Normals.GetSlope(o, l.Major, 1 - l.Major); // along the minor axis
+        s.Receiver[at] = this->F.Heights[t] + offset * rise * this->F.Spacing[1 - l.Major];
       }
     }
   }
@@ -713,19 +779,14 @@ void Group::Scatter(const Scratch& s, const Sink& sink) const
       {
         vtkIdType i, j;
         l.ToIJ(m, c + l.Nearest[m], i, j);
-        double slopes[4];
-        for (int k = 0; k < 4; ++k)
-        {
-          slopes[k] = s.Slope[k].empty() ? NoSample : s.Slope[k][at] * perStep;
-        }
-        sink(this->F.OutputIndex(i, j), slopes);
+        sink(this->F.OutputIndex(i, j), Received{ s, at, perStep });
       }
     }
   }
 }
 
 // Sweeps the lines of a group: each line once per sector, and with `lower` once more with its
-// samples negated.
+// samples negated; then what the pass's sectors take from each receiver.
 void SweepGroup(
   Scratch& s, LineSweep& sweep, const Lines& lines, vtkIdType count, vtkIdType n, bool lower)
 {
@@ -737,6 +798,7 @@ void SweepGroup(
     {
       sweep.Run(z, zr, &s.Slope[k][c * n], n, k == 1);
     }
+    (lines.Count == 2 ? AddDeficits<2> : AddDeficits<1>)(lines, s, c * n, n);
     if (!lower)
     {
       continue;
@@ -869,42 +931,27 @@ public:
   {
   }
 
-  void operator()(vtkIdType o, const double slopes[4]) const
+  void operator()(vtkIdType o, const Received& r) const
   {
-    float n[3];
-    this->Normals.Get(o, n);
-    this->AddApertures(o, n, slopes);
+    this->Out.ApertureRadius[o] += r.Deficit(0);
+    for (int c = 0; c < 3; ++c)
+    {
+      this->Out.BentNormals[3 * o + c] += r.Deficit(c + 1);
+    }
+    for (int k = 0; k < this->L.Count && this->Horizons.IsWanted(); ++k)
+    {
+      this->Horizons.At(o, this->L.Index[k]) = static_cast<float>(FastAtan(r.Slope(k)));
+    }
     if (this->Sampled)
     {
+      float n[3];
+      this->Normals.Get(o, n);
+      const double slopes[4] = { r.Slope(0), r.Slope(1), r.Slope(2), r.Slope(3) };
       this->AddProducts(o, n, slopes);
     }
   }
 
 private:
-  void AddApertures(vtkIdType o, const float n[3], const double slopes[4]) const
-  {
-    const double down[2] = { -n[0] / n[2], -n[1] / n[2] }; // the tangent plane's slope along x, y
-    double deficit[4] = { 0.0, 0.0, 0.0, 0.0 };
-    for (int k = 0; k < this->L.Count; ++k)
-    {
-      const Sector& sector = this->L.Sectors[k];
-      const double tangent = down[0] * sector.Cos + down[1] * sector.Sin;
-      const double top = std::max(slopes[k], tangent);
-      const double cosA = 1.0 / std::sqrt(1.0 + top * top), a = FastAtan(top);
-      Deficit(sector.Dphi, sector.Chord, a, top * cosA, cosA, deficit);
-      if (this->Horizons.IsWanted())
-      {
-        this->Horizons.At(o, this->L.Index[k]) =
-          static_cast<float>(slopes[k] >= tangent ? a : FastAtan(slopes[k]));
-      }
-    }
-    this->Out.ApertureRadius[o] += static_cast<float>(deficit[0]);
-    for (int c = 0; c < 3; ++c)
-    {
-      this->Out.BentNormals[3 * o + c] += static_cast<float>(deficit[c + 1]);
-    }
-  }
-
   void AddProducts(vtkIdType o, const float n[3], const double slopes[4]) const
   {
     const vtkHorizonApertures::Buffers& out = this->Out;
@@ -915,9 +962,8 @@ private:
       const double h = FastAtan(slopes[k]); // −π/2 without a sample
       if (skies)
       {
-        const double top = std::max(slopes[k], 0.0), cosA = 1.0 / std::sqrt(1.0 + top * top);
         const Sector& sector = this->L.Sectors[k];
-        Deficit(sector.Dphi, sector.Chord, std::max(h, 0.0), top * cosA, cosA, sky);
+        SlopeDeficit(sector.Dphi, sector.Chord, std::max(slopes[k], 0.0), sky);
       }
       if (slopes[k] == NoSample)
       {
@@ -1149,7 +1195,7 @@ bool vtkHorizonApertures::ComputeHorizons(
   horizons.assign(f.OutNx * f.OutNy, std::numeric_limits<float>::quiet_NaN());
   float* h = horizons.data();
   SweepSector(f, Lines(f, grid, sector, false), store, false,
-    [h](vtkIdType o, const double slopes[4]) { h[o] = static_cast<float>(std::atan(slopes[0])); });
+    [h](vtkIdType o, const Received& r) { h[o] = static_cast<float>(std::atan(r.Slope(0))); });
   return true;
 }
 

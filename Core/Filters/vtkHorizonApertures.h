@@ -53,12 +53,16 @@
  *
  * Lines are swept in parallel, in groups of adjacent lines that read and write neighbouring
  * texels together; opposite sectors (φ and φ + π) share their lines, so that one pass gathers
- * the samples and adds to the texels for both, sweeping each line both ways. Each texel is
+ * the samples and adds to the texels for both, sweeping each line both ways. What a pass's
+ * sectors take from each receiver of a line is computed right after its sweeps, in a loop over
+ * the line's samples without branches that the compiler vectorises (the file is built without
+ * errno from sqrt and without FP traps for that); the scatter then adds four floats per texel
+ * (per texel, with a branchy arctangent, this was half the sweeps' time). Each texel is
  * written by one line per pass and passes are summed in order, so that results do not depend
  * on threads. Per-texel sums live in the output arrays until the last pass (33 bytes per
  * output texel in all, besides the input and the threads' buffers of a group of lines). Kept
- * horizons (Buffers::Horizons, 4 bytes a sector) go first to planes of 8 sectors (32 bytes a
- * texel more), which fill the per-texel records together every 4 passes.
+ * horizons (Buffers::Horizons, 4 bytes a sector) are written into their own array, sector-major
+ * in blocks of 1024 texels, which one pass turns into per-texel records at the end.
  *
  * Terrain products, from the same horizons (h⁺ the horizon, h⁻ that of the negated heights,
  * i.e. minus the lowest elevation angle, which the same lines give by a second sweep of their
