@@ -122,6 +122,13 @@ void vtkApertureVolumeRepresentation::SetInterpolateLight(bool interpolate)
 }
 
 //------------------------------------------------------------------------------
+void vtkApertureVolumeRepresentation::SetSurfaceOffset(double voxels)
+{
+  this->GetApertureVolumeMapper()->SetSurfaceOffset(voxels);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
 void vtkApertureVolumeRepresentation::SetLightSize(double degrees)
 {
   this->GetApertureVolumeMapper()->SetLightRadius(vtkMath::RadiansFromDegrees(degrees));

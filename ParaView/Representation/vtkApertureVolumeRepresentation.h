@@ -62,6 +62,12 @@ public:
   void SetInterpolateLight(bool interpolate);
 
   /**
+   * How far toward the eye each sample reads its apertures, in aperture voxels, 0 to 2
+   * (vtkApertureVolumeMapper::SetSurfaceOffset()). Default 1.
+   */
+  void SetSurfaceOffset(double voxels);
+
+  /**
    * Angular radius of every light, in degrees. Default 5.73 (0.1 radian, a soft sun).
    */
   void SetLightSize(double degrees);

@@ -118,6 +118,12 @@ def main(plugin, baseline, work, data):
     change = abs(blended_light - picture).mean()
     check(change > 0.05, f"Interpolate Light blends the voxels' light instead of their apertures "
           f"({change:.3f} levels > 0.05 from off)")
+    display.ApertureVolumeSurfaceOffset = 0.0
+    in_place = shot(view, work, "aperture-volume-soft-light-in-place", SIZE)
+    change = abs(in_place - blended_light).mean()
+    check(change > 0.05, f"Surface Offset 0 reads the apertures in place ({change:.3f} levels > "
+          "0.05 from 1)")
+    display.ApertureVolumeSurfaceOffset = 1.0
     display.ApertureVolumeInterpolateLight = 0
 
     display.ApertureVolumeLightSize = 2.0
