@@ -387,21 +387,26 @@ struct Samples
   double operator[](vtkIdType k) const { return this->Base[k * this->Step]; }
 };
 
-// A receiver's view along its line: sample indices, their heights Z, its index K and height.
+// A sample on a line: its index in sweep order, as a double (exact), and its height. The hulls
+// hold points rather than indices, so that their tests read no heights through an index (the
+// pop loop's dependency chain).
+struct Point
+{
+  double X, Z;
+};
+
+// A receiver's view along its line: its index X and height.
 struct Viewpoint
 {
-  Samples Z;
-  vtkIdType K;
-  double Height;
+  double X, Height;
 
-  // Whether sample a rises at least as high as sample b, seen from here.
-  bool AtLeast(vtkIdType a, vtkIdType b) const
+  // Whether point a rises at least as high as point b, seen from here.
+  bool AtLeast(const Point& a, const Point& b) const
   {
-    return (this->Z[a] - this->Height) * double(this->K - b) >=
-      (this->Z[b] - this->Height) * double(this->K - a);
+    return (a.Z - this->Height) * (this->X - b.X) >= (b.Z - this->Height) * (this->X - a.X);
   }
 
-  double Slope(vtkIdType a) const { return (this->Z[a] - this->Height) / double(this->K - a); }
+  double Slope(const Point& a) const { return (a.Z - this->Height) / (this->X - a.X); }
 };
 
 // The steepest slope from a viewpoint to an upper hull, chain(0 … n − 1) from the farthest
@@ -440,11 +445,12 @@ struct Scratch
   std::vector<double> Slope[4];
   // Out: what the pass's sectors take from each receiver's hemisphere, Deficit()'s four sums.
   std::vector<float> Deficit[4];
-  std::vector<vtkIdType> Hull;
+  std::vector<Point> Hull;
   // Suffix hulls of the previous block: a stack, and per sample of the block, where its push
   // wrote (-1: not pushed), what it overwrote, the stack size before it, and the highest
   // occluder of its suffix.
-  std::vector<vtkIdType> Suffix, Position, Overwritten, Size;
+  std::vector<Point> Suffix, Overwritten;
+  std::vector<vtkIdType> Position, Size;
   std::vector<double> Highest;
   vtkIdType SuffixFirst = 0, SuffixSize = 0;
 
@@ -467,7 +473,11 @@ struct Scratch
     this->Slope[2].resize(lower ? lines * length : 0);
     this->Slope[3].resize(lower && sectors == 2 ? lines * length : 0);
     this->Hull.resize(length);
-    for (auto* v : { &this->Suffix, &this->Position, &this->Overwritten, &this->Size })
+    for (auto* v : { &this->Suffix, &this->Overwritten })
+    {
+      v->resize(std::min(window, length));
+    }
+    for (auto* v : { &this->Position, &this->Size })
     {
       v->resize(std::min(window, length));
     }
@@ -490,17 +500,17 @@ public:
   void Run(const double* z, const double* zr, double* slope, vtkIdType n, bool reversed);
 
 private:
-  double Prefix(const Viewpoint& view, bool occludes, vtkIdType& size);
+  double Prefix(const Viewpoint& view, double occluder, vtkIdType& size);
   void BuildSuffixes(const Samples& z, vtkIdType first, vtkIdType last);
   void Undo(vtkIdType s);
 
   // No slope to the suffix in range is steeper than its highest occluder at the suffix's
   // nearest (or, below the viewpoint, farthest) distance: most receivers need no search.
-  double SuffixBound(const Viewpoint& view) const
+  double SuffixBound(const Viewpoint& view, vtkIdType k) const
   {
-    const vtkIdType first = view.K - this->Window, last = this->S.SuffixFirst + this->Window - 1;
+    const vtkIdType first = k - this->Window, last = this->S.SuffixFirst + this->Window - 1;
     const double rise = this->S.Highest[first - this->S.SuffixFirst] - view.Height;
-    return rise / double(view.K - (rise > 0.0 ? last : first));
+    return rise / (view.X - double(rise > 0.0 ? last : first));
   }
 
   Scratch& S;
@@ -517,8 +527,8 @@ void LineSweep::Run(const double* zs, const double* zrs, double* slopes, vtkIdTy
   const vtkIdType step = reversed ? -1 : 1, start = reversed ? n - 1 : 0;
   const Samples z{ zs + start, step }, zr{ zrs + start, step };
   bool suffixes = false;
-  // Locals, not members: the hull's stores could overwrite a member of the same type, so that
-  // each push went through memory (a fifth of the sweep's time).
+  // Locals, not members, which the compiler would reload and store around every store into the
+  // hull that might alias them (as a member, the hull's size cost a fifth of the sweep).
   const vtkIdType window = this->Window;
   vtkIdType hullSize = 0;
   for (vtkIdType k = 0, offset = 0; k < n; ++k, offset = offset + 1 == window ? 0 : offset + 1)
@@ -541,35 +551,36 @@ void LineSweep::Run(const double* zs, const double* zrs, double* slopes, vtkIdTy
     {
       continue;
     }
-    const Viewpoint view{ z, k, receives ? zr[k] : z[k] };
-    double best = this->Prefix(view, occludes, hullSize);
-    if (receives && suffixes && best < this->SuffixBound(view))
+    const Viewpoint view{ double(k), receives ? zr[k] : z[k] };
+    double best = this->Prefix(view, z[k], hullSize);
+    if (receives && suffixes && best < this->SuffixBound(view, k))
     {
-      const vtkIdType* stack = this->S.Suffix.data();
+      const Point* stack = this->S.Suffix.data();
       const vtkIdType top = this->S.SuffixSize - 1;
       best = std::max(best,
-        Tangent(view, this->S.SuffixSize, [stack, top](vtkIdType i) { return stack[top - i]; }));
+        Tangent(view, this->S.SuffixSize,
+          [stack, top](vtkIdType i) -> const Point& { return stack[top - i]; }));
     }
     slopes[start + k * step] = receives ? best : NoSample;
   }
 }
 
-// The steepest slope from a viewpoint to the hull of its block so far (`size` points); an
-// occluding one is pushed onto it, after popping the points under its tangent (the top is then
-// the tangent).
-double LineSweep::Prefix(const Viewpoint& view, bool occludes, vtkIdType& size)
+// The steepest slope from a viewpoint to the hull of its block so far (`size` points); one that
+// occludes (at height `occluder`, not NaN) is pushed onto it, after popping the points under its
+// tangent (the top is then the tangent).
+double LineSweep::Prefix(const Viewpoint& view, double occluder, vtkIdType& size)
 {
-  vtkIdType* hull = this->S.Hull.data();
-  if (!occludes)
+  Point* hull = this->S.Hull.data();
+  if (std::isnan(occluder))
   {
-    return Tangent(view, size, [hull](vtkIdType i) { return hull[i]; });
+    return Tangent(view, size, [hull](vtkIdType i) -> const Point& { return hull[i]; });
   }
   while (size >= 2 && view.AtLeast(hull[size - 2], hull[size - 1]))
   {
     --size;
   }
   const double best = size > 0 ? view.Slope(hull[size - 1]) : NoSample;
-  hull[size++] = view.K;
+  hull[size++] = Point{ view.X, occluder };
   return best;
 }
 
@@ -594,8 +605,8 @@ void LineSweep::BuildSuffixes(const Samples& z, vtkIdType first, vtkIdType last)
     // Pop the leftmost hull point when it is not strictly above the line from k to the next.
     while (size >= 2)
     {
-      const vtkIdType t = s.Suffix[size - 1], u = s.Suffix[size - 2];
-      if ((z[t] - z[k]) * double(u - k) > (z[u] - z[k]) * double(t - k))
+      const Point &t = s.Suffix[size - 1], &u = s.Suffix[size - 2];
+      if ((t.Z - z[k]) * (u.X - double(k)) > (u.Z - z[k]) * (t.X - double(k)))
       {
         break;
       }
@@ -603,7 +614,7 @@ void LineSweep::BuildSuffixes(const Samples& z, vtkIdType first, vtkIdType last)
     }
     s.Position[r] = size;
     s.Overwritten[r] = s.Suffix[size];
-    s.Suffix[size++] = k;
+    s.Suffix[size++] = Point{ double(k), z[k] };
   }
   s.SuffixFirst = first;
   s.SuffixSize = size;
