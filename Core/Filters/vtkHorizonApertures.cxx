@@ -163,9 +163,17 @@ public:
       return;
     }
     const double l1 = std::abs(n[0]) + std::abs(n[1]) + std::max(n[2], 0.0);
-    auto code = [l1](double c) // 32767 ± 32767: 0 and ±1 exactly
-    { return static_cast<std::uint32_t>(std::lround(c / l1 * 32767.0) + 32767); };
-    const std::uint32_t word = code(n[0]) | code(n[1]) << 16;
+    long u = std::lround(n[0] / l1 * 32767.0), v = std::lround(n[1] / l1 * 32767.0); // 0, ±1 exact
+    // Keep one quantum of z: a normal within it of the horizontal (a plane steeper than about
+    // 32767:1) made the tangent plane's slope infinite, and such planes closed (3e-5 rad off).
+    const long excess = std::abs(u) + std::abs(v) - 32766;
+    if (excess > 0)
+    {
+      long& larger = std::abs(u) >= std::abs(v) ? u : v;
+      larger -= larger > 0 ? excess : -excess;
+    }
+    const std::uint32_t word =
+      static_cast<std::uint32_t>(u + 32767) | static_cast<std::uint32_t>(v + 32767) << 16;
     std::memcpy(&this->Packed[o], &word, sizeof(word));
   }
 

@@ -514,7 +514,7 @@ void TestDeterminism()
 // one of their own without AO): every output within 2e-4 of the float normals' (radians, unit
 // vectors, fractions; openness in degrees scaled to radians), the no-data flags the same and
 // no-data texels' bent normals still exactly +z; a tile of rough terrain by a hole, with horizons
-// and terrain products.
+// and terrain products. Planes steeper than the packing resolves stay open.
 void TestWithoutNormals()
 {
   const Terrain t = RoughWithHole();
@@ -567,6 +567,25 @@ void TestWithoutNormals()
               << ", no-data texels not bent to +z " << notUp << "\n";
     Check(worst <= 2e-4 && kept.Valid == packed.Valid && notUp == 0,
       "packed normals give the float normals' outputs", worst, 2e-4);
+  }
+  // Planes too steep for 16 bits a coordinate (tan 89.99° up to 1e7): still open, r = π/2.
+  for (const double slope : { 5.7e3, 1e5, 1e7 })
+  {
+    const Terrain plane = Plane(16, std::atan(slope), 0.3);
+    std::vector<float> floats(5 * 16 * 16);
+    std::vector<unsigned char> valid(16 * 16);
+    float* p = floats.data();
+    const vtkHorizonApertures::Buffers b{ p, p + 3 * 256, p + 4 * 256, nullptr, valid.data() };
+    std::string error;
+    Check(vtkHorizonApertures::Compute(plane.Grid(16), b, error), "Compute() fails: " + error);
+    double worst = 0.0;
+    for (vtkIdType o = 0; o < 256; ++o)
+    {
+      const double d = std::abs(b.ApertureRadius[o] - 0.5 * Pi);
+      worst = std::max(worst, std::isnan(d) ? 10.0 : d);
+    }
+    std::cout << "packed normals, plane of slope " << slope << ": |r - π/2| " << worst << "\n";
+    Check(worst <= 1e-3, "a steep plane with packed normals is open", worst, 1e-3);
   }
 }
 
