@@ -55,12 +55,14 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
+#include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <string>
@@ -296,11 +298,30 @@ void Accuracy(const char* name, vtkImageData* volume, vtkVolumeProperty* propert
   }
 }
 
-// The median of `frames` renders of `window`, seconds.
+// Whether the window's last frame holds anything but the black background: a mapper whose
+// shader does not compile draws nothing, and would be timed as the fastest.
+bool ShowsVolume(vtkRenderWindow* window)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  double range[2];
+  grab->GetOutput()->GetPointData()->GetScalars()->GetRange(range, -1); // the pixels' norms
+  return range[1] > 0.0;
+}
+
+// The median of `frames` renders of `window`, seconds; exits when the mapper draws nothing.
 double MedianFrame(vtkRenderWindow* window, vtkVolume* volume, vtkVolumeMapper* mapper, int frames)
 {
   volume->SetMapper(mapper);
   window->Render(); // the first frame builds shaders and textures (and computes apertures)
+  if (!ShowsVolume(window))
+  {
+    std::fprintf(stderr, "%s drew nothing (a shader that does not compile?): not timed.\n",
+      mapper->GetClassName());
+    std::exit(EXIT_FAILURE);
+  }
   std::vector<double> times;
   for (int f = 0; f < frames; ++f)
   {
