@@ -163,7 +163,7 @@ public:
       return;
     }
     const double l1 = std::abs(n[0]) + std::abs(n[1]) + std::max(n[2], 0.0);
-    long u = std::lround(n[0] / l1 * 32767.0), v = std::lround(n[1] / l1 * 32767.0); // 0, ±1 exact
+    long u = std::lround(n[0] / l1 * 32767.0), v = std::lround(n[1] / l1 * 32767.0); // 0 exact
     // Keep one quantum of z: a normal within it of the horizontal (a plane steeper than about
     // 32767:1) made the tangent plane's slope infinite, and such planes closed (3e-5 rad off).
     const long excess = std::abs(u) + std::abs(v) - 32766;
