@@ -189,7 +189,7 @@ public:
    * Add the normals the apertures were computed against as `Normals` when the input has none.
    * Default on. Off saves 12 bytes a point where only the apertures are wanted (aperture-precompute
    * writes no normals): the horizon sweeps then keep each texel's normal in 4 bytes (octahedral,
-   * within 5e-5 rad) in the AmbientOcclusion array until they write it (in 4 bytes of their own
+   * within 7.5e-5 rad) in the AmbientOcclusion array until they write it (in 4 bytes of their own
    * without AO), and the outputs move by less than 1e-4; rays give the same bits.
    */
   vtkSetMacro(ComputeNormals, bool);

@@ -145,7 +145,7 @@ void TexelNormal(const Field& f, vtkIdType i, vtkIdType j, double n[3])
 // Each output texel's normal where the sweeps read it: three floats, or without them one 32-bit
 // word in a float's place (the AO array, which only Finish() writes, or a scratch array): the
 // hemispherical octahedral coordinates of the normal (its z is never negative), 16 bits each,
-// within 5e-5 rad: 4 bytes a texel instead of 12, for a few nanoseconds to decode.
+// within 7.5e-5 rad: 4 bytes a texel instead of 12, for a few nanoseconds to decode.
 class NormalStore
 {
 public:
@@ -164,8 +164,8 @@ public:
     }
     const double l1 = std::abs(n[0]) + std::abs(n[1]) + std::max(n[2], 0.0);
     long u = std::lround(n[0] / l1 * 32767.0), v = std::lround(n[1] / l1 * 32767.0); // 0 exact
-    // Keep one quantum of z: a normal within it of the horizontal (a plane steeper than about
-    // 32767:1) made the tangent plane's slope infinite, and such planes closed (3e-5 rad off).
+    // Keep one quantum of z: a normal within a quantum (3e-5 rad) of the horizontal, a plane
+    // steeper than about 33000:1, made the tangent plane's slope infinite and closed the plane.
     const long excess = std::abs(u) + std::abs(v) - 32766;
     if (excess > 0)
     {

@@ -55,9 +55,10 @@
  * texels together; opposite sectors (φ and φ + π) share their lines, so that one pass gathers
  * the samples and adds to the texels for both, sweeping each line both ways. What a pass's
  * sectors take from each receiver of a line is computed right after its sweeps, in a loop over
- * the line's samples without branches that the compiler vectorises (the file is built without
- * errno from sqrt and without FP traps for that); the scatter then adds four floats per texel
- * (per texel, with a branchy arctangent, this was half the sweeps' time). Each texel is
+ * the line's samples without branches that the compiler vectorises (GCC and Clang build the
+ * file without errno from sqrt and without FP traps for that); the scatter then adds four
+ * floats per texel, besides the horizons and the terrain products (per texel, with a branchy
+ * arctangent, this was half the sweeps' time). Each texel is
  * written by one line per pass and passes are summed in order, so that results do not depend
  * on threads. Per-texel sums live in the output arrays until the last pass (33 bytes per
  * output texel in all, besides the input and the threads' buffers of a group of lines). Kept
@@ -136,7 +137,7 @@ public:
     float* ApertureRadius;   ///< radians; 0 where not valid
     float* AmbientOcclusion; ///< 1 on an open plane; 0 where not valid; may be null
     /// (0, 0, 1) where not valid; may be null: the sweeps then keep each normal in 4 bytes
-    /// (octahedral, within 5e-5 rad) in AmbientOcclusion's array until they write it, or in
+    /// (octahedral, within 7.5e-5 rad) in AmbientOcclusion's array until they write it, or in
     /// an array of their own without AO; the outputs move by less than 1e-4.
     float* Normals;
     unsigned char* Valid; ///< 0 for no-data texels

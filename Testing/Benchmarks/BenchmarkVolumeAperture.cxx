@@ -304,6 +304,7 @@ bool ShowsVolume(vtkRenderWindow* window)
 {
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
+  grab->ShouldRerenderOff(); // the frame as drawn, not a new one
   grab->ReadFrontBufferOff();
   grab->Update();
   double range[2];
