@@ -70,7 +70,6 @@ struct Build
   vtkApertureSurface& S;
   vtkPolyData* Input;
   vtkIdType N;
-  std::vector<double> World;            // input points, 3 each
   std::vector<unsigned char> Finite;    // per input point
   std::vector<std::uint32_t> VertexOf;  // per input point (NoVertex when not finite)
   std::vector<vtkIdType> VertexInput;   // an input point of each vertex
@@ -79,10 +78,11 @@ struct Build
   std::vector<std::uint32_t> TriInput;  // every triangle's input points, 3 each
   std::vector<std::uint32_t> TriCell;   // its polygon or strip
   std::vector<std::uint32_t> TriCorner; // the connectivity index of each corner
-  std::vector<vtkIdType> TriPoint;      // the receiving point of each corner (-1: none)
+  std::vector<std::uint32_t> TriPoint;  // the receiving point of each corner (NoVertex: none)
   std::vector<std::uint32_t> Geometry;  // triangles with three distinct vertices
-  std::vector<float> FaceNormals;       // unit (or zero) normal of each geometry triangle
-  std::vector<float> FaceAreas;
+  // The unit (or zero) normal and the area of each triangle around the vertex at hand: kept
+  // for every triangle, they would be the largest array of a large surface's intake.
+  std::vector<std::array<float, 4>> Faces;
   std::vector<vtkIdType> IncidentStart;    // per vertex, into Incident
   std::vector<std::uint32_t> Incident;     // 3 * geometry triangle + corner
   std::vector<vtkIdType> VertexFirstPoint; // each vertex's first receiving point (-1: none)
@@ -100,6 +100,12 @@ struct Build
   {
     return this->VertexOf[this->TriInput[3 * triangle + corner]];
   }
+  // The receiving point of corner c, -1 when it has none.
+  vtkIdType PointOf(size_t c) const
+  {
+    const std::uint32_t point = this->TriPoint[c];
+    return point == vtkApertureSurface::NoVertex ? -1 : static_cast<vtkIdType>(point);
+  }
 
   void Weld();
   void Triangulate();
@@ -111,18 +117,20 @@ struct Build
   bool Consistent() const;
   std::vector<std::vector<std::pair<vtkIdType, bool>>> ManifoldNeighbours() const;
   void FlipPieces(const std::vector<std::vector<std::pair<vtkIdType, bool>>>& next);
-  void ComputeFaceNormals();
+  void FacesAround(const std::uint32_t* corners, int m);
   void FindIncident();
   void SidesFromCreases(double cosAngle);
   void GroupCreaseFaces(
     const std::uint32_t* corners, int m, double cosAngle, Classes& classes) const;
-  void SumSides(const std::uint32_t* corners, int m, Classes& classes, Sides& sides) const;
+  void SumSides(int m, Classes& classes, Sides& sides) const;
   void MakeSidePoints(vtkIdType v, const Sides& sides, std::vector<vtkIdType>& pointOfSide);
   void SidesFromNormals(vtkDataArray* normals, double cosAngle);
   vtkIdType AddPoint(vtkIdType vertex, unsigned int side, const double normal[3]);
   void MapInputPoints();
   void PointOfEachInput();
   void CornerPoints();
+  void TrianglePoints(
+    vtkIdType cell, vtkIdType first, vtkIdType npts, size_t& t, std::vector<vtkIdType>& local);
   void StripTriangles();
 };
 }
@@ -131,18 +139,19 @@ struct Build
 // Points at the same position become one vertex, numbered in the order of their first point.
 void Build::Weld()
 {
-  vtkApertureSurface::WorldPoints(this->Input->GetPoints(), this->World);
+  std::vector<double> world; // input points, 3 each
+  vtkApertureSurface::WorldPoints(this->Input->GetPoints(), world);
   this->Finite.assign(this->N, 0);
   std::vector<vtkIdType> order;
   for (vtkIdType i = 0; i < this->N; ++i)
   {
-    this->Finite[i] = vtkApertureSurface::IsUsable(&this->World[3 * i]);
+    this->Finite[i] = vtkApertureSurface::IsUsable(&world[3 * i]);
     if (this->Finite[i])
     {
       order.push_back(i);
     }
   }
-  const double* w = this->World.data();
+  const double* w = world.data();
   std::sort(order.begin(), order.end(),
     [w](vtkIdType a, vtkIdType b)
     {
@@ -191,6 +200,16 @@ void Build::Weld()
 void Build::Triangulate()
 {
   this->OnSurface.assign(this->N, 0);
+  // A cell of n corners makes at most n - 2 triangles: sized once, the triangles' arrays are
+  // never copied to grow (on a large surface they are the largest part of the intake).
+  vtkCellArray* polys = this->Input->GetPolys();
+  vtkCellArray* strips = this->Input->GetStrips();
+  const vtkIdType bound = std::max<vtkIdType>(0,
+    polys->GetNumberOfConnectivityIds() + strips->GetNumberOfConnectivityIds() -
+      2 * (polys->GetNumberOfCells() + strips->GetNumberOfCells()));
+  this->TriInput.reserve(3 * bound);
+  this->TriCorner.reserve(3 * bound);
+  this->TriCell.reserve(bound);
   std::vector<vtkIdType> local;
   vtkIdType cell = 0;
   this->Polygons = this->Input->GetNumberOfPolys();
@@ -276,6 +295,7 @@ void vtkApertureMeshSurface::Triangulate(vtkIdType npts, const vtkIdType* ids, b
 void Build::SelectGeometry()
 {
   const vtkIdType triangles = static_cast<vtkIdType>(this->TriCell.size());
+  this->Geometry.reserve(triangles);
   for (vtkIdType t = 0; t < triangles; ++t)
   {
     const vtkIdType a = this->Vertex(t, 0), b = this->Vertex(t, 1), c = this->Vertex(t, 2);
@@ -411,16 +431,15 @@ void Build::FlipPieces(const std::vector<std::vector<std::pair<vtkIdType, bool>>
 }
 
 //------------------------------------------------------------------------------
-void Build::ComputeFaceNormals()
+void Build::FacesAround(const std::uint32_t* corners, int m)
 {
-  this->FaceNormals.assign(3 * this->Geometry.size(), 0.0);
-  this->FaceAreas.assign(this->Geometry.size(), 0.0);
-  for (size_t g = 0; g < this->Geometry.size(); ++g)
+  this->Faces.resize(m);
+  for (int i = 0; i < m; ++i)
   {
     double p[3][3];
     for (int k = 0; k < 3; ++k)
     {
-      const float* v = &this->S.Vertices[3 * this->Vertex(this->Geometry[g], k)];
+      const float* v = &this->S.Vertices[3 * this->Vertex(this->Geometry[corners[i] / 3], k)];
       std::copy(v, v + 3, p[k]);
     }
     const double e1[3] = { p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2] };
@@ -429,11 +448,11 @@ void Build::ComputeFaceNormals()
     vtkMath::Cross(e1, e2, n);
     const double length = vtkMath::Normalize(n);
     const bool area = length > 0.0; // zero area: no direction
-    this->FaceAreas[g] = area ? static_cast<float>(0.5 * length) : 0.0f;
     for (int k = 0; k < 3; ++k)
     {
-      this->FaceNormals[3 * g + k] = area ? static_cast<float>(n[k]) : 0.0f;
+      this->Faces[i][k] = area ? static_cast<float>(n[k]) : 0.0f;
     }
+    this->Faces[i][3] = area ? static_cast<float>(0.5 * length) : 0.0f;
   }
 }
 
@@ -469,8 +488,9 @@ vtkIdType Build::AddPoint(vtkIdType vertex, unsigned int side, const double norm
 {
   const vtkIdType id = static_cast<vtkIdType>(this->S.PointVertex.size());
   this->S.PointVertex.push_back(static_cast<std::uint32_t>(vertex));
-  this->S.Key.push_back(
-    vtkApertureSurface::PointKey(&this->World[3 * this->VertexInput[vertex]], side));
+  double p[3];
+  this->Input->GetPoint(this->VertexInput[vertex], p);
+  this->S.Key.push_back(vtkApertureSurface::PointKey(p, side));
   double n[3] = { normal[0], normal[1], normal[2] };
   const double length = vtkMath::Normalize(n);
   const bool valid = length > 0.0 && std::isfinite(length);
@@ -502,13 +522,14 @@ void Build::SidesFromCreases(double cosAngle)
     {
       continue; // in no triangle: its points are on no surface, or only in degenerate cells
     }
+    this->FacesAround(corners, m);
     this->GroupCreaseFaces(corners, m, cosAngle, classes);
-    this->SumSides(corners, m, classes, sides);
+    this->SumSides(m, classes, sides);
     this->MakeSidePoints(v, sides, pointOfSide);
     for (int i = 0; i < m; ++i)
     {
       this->TriPoint[3 * this->Geometry[corners[i] / 3] + corners[i] % 3] =
-        pointOfSide[sides.Of[i]];
+        static_cast<std::uint32_t>(pointOfSide[sides.Of[i]]);
     }
   }
 }
@@ -549,8 +570,8 @@ void Build::GroupCreaseFaces(
   {
     for (size_t b = a + 1; b < keyed.size() && keyed[b].first == keyed[a].first; ++b)
     {
-      const float* na = &this->FaceNormals[corners[keyed[a].second] / 3 * 3];
-      const float* nb = &this->FaceNormals[corners[keyed[b].second] / 3 * 3];
+      const float* na = this->Faces[keyed[a].second].data();
+      const float* nb = this->Faces[keyed[b].second].data();
       if (vtkMath::Dot(na, na) > 0.0f && vtkMath::Dot(na, nb) >= cosAngle)
       {
         classes.Unite(keyed[a].second, keyed[b].second);
@@ -560,8 +581,9 @@ void Build::GroupCreaseFaces(
 }
 
 //------------------------------------------------------------------------------
-// The classes of the m triangles around a vertex as its sides, numbered in the order met.
-void Build::SumSides(const std::uint32_t* corners, int m, Classes& classes, Sides& sides) const
+// The classes of the m triangles around a vertex (Faces) as its sides, numbered in the order
+// met.
+void Build::SumSides(int m, Classes& classes, Sides& sides) const
 {
   sides.Of.resize(m);
   sides.Sums.clear();
@@ -579,8 +601,8 @@ void Build::SumSides(const std::uint32_t* corners, int m, Classes& classes, Side
       sides.Areas.push_back(0.0);
     }
     const int side = sides.Of[i] = sideOfRoot[root];
-    const float* n = &this->FaceNormals[corners[i] / 3 * 3];
-    const double area = this->FaceAreas[corners[i] / 3];
+    const float* n = this->Faces[i].data();
+    const double area = this->Faces[i][3];
     for (int k = 0; k < 3; ++k)
     {
       sides.Sums[side][k] += n[k];
@@ -712,7 +734,7 @@ void Build::SidesFromNormals(vtkDataArray* normals, double cosAngle)
   {
     for (int k = 0; k < 3; ++k)
     {
-      this->TriPoint[3 * t + k] = cluster[this->TriInput[3 * t + k]];
+      this->TriPoint[3 * t + k] = static_cast<std::uint32_t>(cluster[this->TriInput[3 * t + k]]);
     }
   }
 }
@@ -722,18 +744,23 @@ void Build::SidesFromNormals(vtkDataArray* normals, double cosAngle)
 // vtkApertureSurfaceOutput, and the geometry for Embree.
 void Build::MapInputPoints()
 {
+  // What the sides needed makes room for what the mapping makes.
+  std::vector<std::uint32_t>().swap(this->Incident);
+  std::vector<vtkIdType>().swap(this->IncidentStart);
   this->PointOfEachInput();
   this->CornerPoints();
   if (this->S.BreakStrips)
   {
     this->StripTriangles();
   }
+  this->S.Triangles.reserve(3 * this->Geometry.size());
+  this->S.CornerPoints.reserve(3 * this->Geometry.size());
   for (const vtkIdType t : this->Geometry)
   {
     for (int k = 0; k < 3; ++k)
     {
       this->S.Triangles.push_back(static_cast<std::uint32_t>(this->Vertex(t, k)));
-      this->S.CornerPoints.push_back(static_cast<std::uint32_t>(this->TriPoint[3 * t + k]));
+      this->S.CornerPoints.push_back(this->TriPoint[3 * t + k]);
     }
   }
 }
@@ -750,10 +777,10 @@ void Build::PointOfEachInput()
   {
     // The first of its sides, in their order.
     const vtkIdType i = this->TriInput[c];
-    if (this->TriPoint[c] >= 0 &&
-      (map[i] == vtkApertureSurface::NotOnSurface || this->TriPoint[c] < map[i]))
+    const vtkIdType point = this->PointOf(c);
+    if (point >= 0 && (map[i] == vtkApertureSurface::NotOnSurface || point < map[i]))
     {
-      map[i] = this->TriPoint[c];
+      map[i] = point;
     }
   }
   for (vtkIdType i = 0; i < this->N; ++i)
@@ -783,43 +810,59 @@ void Build::PointOfEachInput()
 }
 
 //------------------------------------------------------------------------------
-// The cells' corners' receiving points, and whether any of them splits its point or, in a strip,
-// has triangles on different sides (the strip is then broken into triangles).
+// The cells' split corners (those whose receiving point is not their input point's), and
+// whether a corner, in a strip, has triangles on different sides (the strip is then broken into
+// triangles). Cell by cell, so that no receiving point is held for every corner.
 void Build::CornerPoints()
 {
   const std::vector<vtkIdType>& map = this->S.InputPoints;
-  std::vector<vtkIdType> corners(this->Corners, -1);
-  for (size_t c = 0; c < this->TriPoint.size(); ++c)
-  {
-    const vtkIdType at = this->TriCorner[c];
-    const bool disagree =
-      corners[at] >= 0 && this->TriPoint[c] >= 0 && corners[at] != this->TriPoint[c];
-    this->S.BreakStrips = this->S.BreakStrips || disagree;
-    corners[at] = corners[at] >= 0 ? corners[at] : this->TriPoint[c];
-  }
-  const vtkIdType polyCorners = this->Input->GetPolys()->GetNumberOfConnectivityIds();
   std::vector<unsigned char> split(this->N, 0);
-  vtkIdType c = 0;
+  std::vector<vtkIdType> local;
+  size_t t = 0;        // the first triangle of the cell
+  vtkIdType cell = 0;  // polygons, then strips
+  vtkIdType first = 0; // the cell's first corner, over polygons then strips
   for (vtkCellArray* cells : { this->Input->GetPolys(), this->Input->GetStrips() })
   {
+    auto& splits = cells == this->Input->GetPolys() ? this->S.PolySplits : this->S.StripSplits;
+    vtkIdType c = 0; // in this cell array's connectivity
     vtkIdType npts;
     const vtkIdType* ids;
     auto it = vtk::TakeSmartPointer(cells->NewIterator());
-    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cell)
     {
       it->GetCurrentCell(npts, ids);
+      this->TrianglePoints(cell, first, npts, t, local);
       for (vtkIdType k = 0; k < npts; ++k, ++c)
       {
-        corners[c] = corners[c] >= 0 ? corners[c] : map[ids[k]];
-        split[ids[k]] |= corners[c] != map[ids[k]] ? 1 : 0;
+        if (local[k] >= 0 && local[k] != map[ids[k]])
+        {
+          splits.push_back({ c, ids[k], local[k] });
+          split[ids[k]] = 1;
+        }
       }
+      first += npts;
     }
   }
   this->S.SplitPoints = std::count(split.begin(), split.end(), 1);
-  if (this->S.SplitPoints > 0 || this->S.BreakStrips)
+}
+
+//------------------------------------------------------------------------------
+// The receiving points of the `npts` corners of cell `cell` (the first at `first`) from its
+// triangles, which begin at triangle t (moved past them): each corner's first triangle
+// corner's, -1 where none has one.
+void Build::TrianglePoints(
+  vtkIdType cell, vtkIdType first, vtkIdType npts, size_t& t, std::vector<vtkIdType>& local)
+{
+  local.assign(npts, -1);
+  for (; t < this->TriCell.size() && this->TriCell[t] == cell; ++t)
   {
-    this->S.PolyCorners.assign(corners.begin(), corners.begin() + polyCorners);
-    this->S.StripCorners.assign(corners.begin() + polyCorners, corners.end());
+    for (int j = 0; j < 3; ++j)
+    {
+      vtkIdType& at = local[this->TriCorner[3 * t + j] - first];
+      const vtkIdType point = this->PointOf(3 * t + j);
+      this->S.BreakStrips = this->S.BreakStrips || (at >= 0 && point >= 0 && at != point);
+      at = at >= 0 ? at : point;
+    }
   }
 }
 
@@ -840,7 +883,7 @@ void Build::StripTriangles()
     {
       this->S.StripTriangles.push_back(in[k]);
       this->S.StripTriangles.push_back(
-        this->TriPoint[3 * t + k] >= 0 ? this->TriPoint[3 * t + k] : map[in[k]]);
+        this->PointOf(3 * t + k) >= 0 ? this->PointOf(3 * t + k) : map[in[k]]);
     }
   }
 }
@@ -871,9 +914,9 @@ bool vtkApertureMeshSurface::Set(vtkApertureSurface& surface, vtkPolyData* input
   build.SelectGeometry();
   build.FindIncident();
   build.Orient();
-  build.ComputeFaceNormals();
-  build.TriPoint.assign(build.TriInput.size(), -1);
+  build.TriPoint.assign(build.TriInput.size(), vtkApertureSurface::NoVertex);
   build.VertexFirstPoint.assign(build.VertexInput.size(), -1);
+  surface.Reserve(static_cast<vtkIdType>(build.VertexInput.size())); // most vertices: 1 point
   const double cosAngle = std::cos(vtkMath::RadiansFromDegrees(featureAngle));
   vtkDataArray* given = vtkApertureSurface::GivenNormals(input);
   surface.NormalsComputed = given == nullptr;

@@ -15,7 +15,6 @@
 #include "vtkApertureSMP.h"
 #include "vtkArrayDispatch.h"
 #include "vtkCellArray.h"
-#include "vtkCellArrayIterator.h"
 #include "vtkDataArrayRange.h"
 #include "vtkDataSet.h"
 #include "vtkFloatArray.h"
@@ -176,6 +175,15 @@ const float* vtkApertureSurface::GetNormal(vtkIdType point) const
 }
 
 //------------------------------------------------------------------------------
+void vtkApertureSurface::Reserve(vtkIdType points)
+{
+  this->PointVertex.reserve(points);
+  this->Valid.reserve(points);
+  this->Key.reserve(points);
+  this->Normals->Allocate(3 * points);
+}
+
+//------------------------------------------------------------------------------
 void vtkApertureSurface::Reset(vtkIdType inputPoints)
 {
   this->Vertices.clear();
@@ -189,8 +197,8 @@ void vtkApertureSurface::Reset(vtkIdType inputPoints)
   this->Key.clear();
   this->CornerPoints.clear();
   this->InputPoints.assign(inputPoints, NotOnSurface);
-  this->PolyCorners.clear();
-  this->StripCorners.clear();
+  this->PolySplits.clear();
+  this->StripSplits.clear();
   this->StripTriangles.clear();
   this->NormalsComputed = false;
   this->UnusablePoints = 0;
@@ -249,11 +257,16 @@ void vtkApertureSurface::KeepInputs(vtkPolyData* input)
 {
   const vtkIdType n = input->GetNumberOfPoints();
   this->InputPoints.resize(n);
-  if (!this->PolyCorners.empty())
+  // The input's cells come first: its corners are the first of each connectivity.
+  auto keep = [](std::vector<SplitCorner>& splits, vtkCellArray* cells)
   {
-    this->PolyCorners.resize(input->GetPolys()->GetNumberOfConnectivityIds());
-    this->StripCorners.resize(input->GetStrips()->GetNumberOfConnectivityIds());
-  }
+    const vtkIdType corners = cells->GetNumberOfConnectivityIds();
+    splits.erase(std::find_if(splits.begin(), splits.end(),
+                   [corners](const SplitCorner& s) { return s.Corner >= corners; }),
+      splits.end());
+  };
+  keep(this->PolySplits, input->GetPolys());
+  keep(this->StripSplits, input->GetStrips());
   const vtkIdType strips = input->GetNumberOfStrips();
   std::vector<vtkIdType> stripTriangles;
   for (size_t t = 0; t < this->StripTriangles.size(); t += 7)
@@ -269,21 +282,11 @@ void vtkApertureSurface::KeepInputs(vtkPolyData* input)
 
   // The counts, over the input's points only.
   std::vector<unsigned char> split(n, 0);
-  for (vtkCellArray* cells : { input->GetPolys(), input->GetStrips() })
+  for (const auto* splits : { &this->PolySplits, &this->StripSplits })
   {
-    const std::vector<vtkIdType>& corners =
-      cells == input->GetPolys() ? this->PolyCorners : this->StripCorners;
-    size_t c = 0;
-    vtkIdType npts;
-    const vtkIdType* ids;
-    auto it = vtk::TakeSmartPointer(cells->NewIterator());
-    for (it->GoToFirstCell(); !it->IsDoneWithTraversal() && !corners.empty(); it->GoToNextCell())
+    for (const SplitCorner& corner : *splits)
     {
-      it->GetCurrentCell(npts, ids);
-      for (vtkIdType k = 0; k < npts; ++k, ++c)
-      {
-        split[ids[k]] |= corners[c] != this->InputPoints[ids[k]] ? 1 : 0;
-      }
+      split[corner.InputPoint] = 1;
     }
   }
   this->SplitPoints = std::count(split.begin(), split.end(), 1);

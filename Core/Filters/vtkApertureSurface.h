@@ -118,6 +118,8 @@ public:
    * Empties the surface for an input of `inputPoints` points (all NotOnSurface).
    */
   void Reset(vtkIdType inputPoints);
+  /// Room for `points` receiving points, so that adding them copies nothing.
+  void Reserve(vtkIdType points);
 
   /// What an input point maps to when it has no receiving point of its own.
   enum PointState : vtkIdType
@@ -188,11 +190,22 @@ public:
   /// Whether a crease runs across a strip (the output then makes the strips triangles).
   bool BreakStrips = false;
 
+  /// A corner of an input cell whose receiving point is not its input point's (InputPoints):
+  /// its index in the cell array's connectivity, its input point, its receiving point.
+  struct SplitCorner
+  {
+    vtkIdType Corner;
+    vtkIdType InputPoint;
+    vtkIdType Point;
+  };
+
   ///@{
-  /// For vtkApertureSurfaceOutput, when points are split: the receiving point of each corner of
-  /// the input's polygons and of its strips, in connectivity order; and when strips break, their
-  /// triangles (strip, then input point and receiving point of each corner: 7 values each).
-  std::vector<vtkIdType> PolyCorners, StripCorners, StripTriangles;
+  /// For vtkApertureSurfaceOutput: the split corners of the input's polygons and of its strips,
+  /// in connectivity order (only these, so that a large surface with a few creases does not keep
+  /// a receiving point for every corner); and when strips break, their triangles (strip, then
+  /// input point and receiving point of each corner: 7 values each).
+  std::vector<SplitCorner> PolySplits, StripSplits;
+  std::vector<vtkIdType> StripTriangles;
   ///@}
 
   /**

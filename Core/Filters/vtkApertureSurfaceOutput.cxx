@@ -14,6 +14,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
@@ -59,24 +60,16 @@ public:
     return inserted.first->second;
   }
 
-  // A copy of `cells` whose corners (in connectivity order) use their receiving points'.
-  vtkSmartPointer<vtkCellArray> Renumber(vtkCellArray* cells, const std::vector<vtkIdType>& corners)
+  // A copy of `cells` whose split corners (in connectivity order) use their receiving points'.
+  vtkSmartPointer<vtkCellArray> Renumber(
+    vtkCellArray* cells, const std::vector<vtkApertureSurface::SplitCorner>& splits)
   {
     auto result = vtkSmartPointer<vtkCellArray>::New();
     result->DeepCopy(cells);
-    vtkIdType c = 0;
-    vtkIdType npts;
-    const vtkIdType* ids;
-    std::vector<vtkIdType> renumbered;
-    for (vtkIdType cell = 0; cell < result->GetNumberOfCells(); ++cell)
+    vtkDataArray* connectivity = result->GetConnectivityArray();
+    for (const vtkApertureSurface::SplitCorner& corner : splits)
     {
-      result->GetCellAtId(cell, npts, ids);
-      renumbered.assign(ids, ids + npts);
-      for (vtkIdType k = 0; k < npts; ++k, ++c)
-      {
-        renumbered[k] = this->Point(ids[k], corners[c]);
-      }
-      result->ReplaceCellAtId(cell, npts, renumbered.data());
+      connectivity->SetTuple1(corner.Corner, this->Point(corner.InputPoint, corner.Point));
     }
     return result;
   }
@@ -143,7 +136,7 @@ void vtkApertureSurfaceOutput::Make(const vtkApertureSurface& surface, vtkPolyDa
     return;
   }
   PointSplitter splitter(input->GetNumberOfPoints(), surface.InputPoints, outputPoints);
-  vtkSmartPointer<vtkCellArray> polys = splitter.Renumber(input->GetPolys(), surface.PolyCorners);
+  vtkSmartPointer<vtkCellArray> polys = splitter.Renumber(input->GetPolys(), surface.PolySplits);
   if (surface.BreakStrips)
   {
     // Strips crossing a crease become their triangles, after the polygons.
@@ -159,7 +152,7 @@ void vtkApertureSurfaceOutput::Make(const vtkApertureSurface& surface, vtkPolyDa
   }
   else
   {
-    output->SetStrips(splitter.Renumber(input->GetStrips(), surface.StripCorners));
+    output->SetStrips(splitter.Renumber(input->GetStrips(), surface.StripSplits));
   }
   output->SetPolys(polys);
   splitter.CopyPoints(input, output);
