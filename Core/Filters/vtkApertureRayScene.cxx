@@ -15,6 +15,7 @@
 #include "vtkApertureText.h"
 
 #include <atomic>
+#include <utility>
 
 namespace
 {
@@ -192,32 +193,67 @@ bool vtkApertureRayScene::Build(const vtkApertureSurface& receivers,
 }
 
 //------------------------------------------------------------------------------
+// The plain triangles are mostly long runs between a few filtered ones: each run is a geometry
+// over the surface's own index buffer, so that the largest array of a large surface is not
+// copied. Where the runs are many (an Embree geometry costs hundreds of bytes), they are copied
+// into one geometry instead.
 bool vtkApertureRayScene::AddSurface(
   const vtkApertureSurface& surface, const std::vector<unsigned char>& risky)
 {
   std::unique_ptr<Filtered> filtered(new Filtered{ &surface, {}, {} });
-  std::vector<std::uint32_t> plain;
+  std::vector<std::pair<size_t, size_t>> runs; // first plain triangle, end
   for (size_t t = 0; t < risky.size(); ++t)
   {
-    auto& to = risky[t] ? filtered->Indices : plain;
-    to.insert(to.end(), &surface.Triangles[3 * t], &surface.Triangles[3 * t + 3]);
     if (risky[t])
     {
+      auto& to = filtered->Indices;
+      to.insert(to.end(), &surface.Triangles[3 * t], &surface.Triangles[3 * t + 3]);
       filtered->Triangles.push_back(static_cast<std::uint32_t>(t));
+    }
+    else if (!runs.empty() && runs.back().second == t)
+    {
+      ++runs.back().second;
+    }
+    else
+    {
+      runs.emplace_back(t, t + 1);
     }
   }
   this->FilteredTriangles += static_cast<vtkIdType>(filtered->Triangles.size());
-  this->Plain.push_back(std::move(plain));
   this->Risky.push_back(std::move(filtered));
-  return this->AddGeometry(surface, this->Plain.back(), nullptr) &&
-    this->AddGeometry(surface, this->Risky.back()->Indices, this->Risky.back().get());
+  bool added = true;
+  if (static_cast<vtkIdType>(runs.size()) <= this->MaximumSharedRuns)
+  {
+    this->SharedRuns += static_cast<vtkIdType>(runs.size());
+    for (const auto& run : runs)
+    {
+      added = added &&
+        this->AddGeometry(
+          surface, surface.Triangles.data() + 3 * run.first, run.second - run.first, nullptr);
+    }
+  }
+  else
+  {
+    std::vector<std::uint32_t> plain;
+    for (const auto& run : runs)
+    {
+      const std::uint32_t* triangles = surface.Triangles.data();
+      plain.insert(plain.end(), triangles + 3 * run.first, triangles + 3 * run.second);
+    }
+    this->Plain.push_back(std::move(plain));
+    added =
+      this->AddGeometry(surface, this->Plain.back().data(), this->Plain.back().size() / 3, nullptr);
+  }
+  const std::vector<std::uint32_t>& indices = this->Risky.back()->Indices;
+  return added &&
+    this->AddGeometry(surface, indices.data(), indices.size() / 3, this->Risky.back().get());
 }
 
 //------------------------------------------------------------------------------
-bool vtkApertureRayScene::AddGeometry(
-  const vtkApertureSurface& surface, const std::vector<std::uint32_t>& indices, Filtered* filtered)
+bool vtkApertureRayScene::AddGeometry(const vtkApertureSurface& surface,
+  const std::uint32_t* indices, size_t triangles, Filtered* filtered)
 {
-  if (indices.empty())
+  if (triangles == 0)
   {
     return true;
   }
@@ -228,8 +264,8 @@ bool vtkApertureRayScene::AddGeometry(
   }
   rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
     surface.Vertices.data(), 0, 3 * sizeof(float), surface.GetNumberOfVertices());
-  rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, indices.data(),
-    0, 3 * sizeof(std::uint32_t), indices.size() / 3);
+  rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, indices, 0,
+    3 * sizeof(std::uint32_t), triangles);
   if (filtered)
   {
     rtcSetGeometryUserData(geometry, filtered);

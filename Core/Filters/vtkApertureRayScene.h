@@ -13,9 +13,10 @@
  * @brief   Embree device and scene over vtkApertureSurface triangles, with the casters' hit
  *          rules (private)
  *
- * Owns an Embree device and one scene, shares the surfaces' vertex buffers with Embree (the
- * surfaces must outlive the scene), and records the first error Embree reports through its
- * device callback, so that the filters can turn it into a vtkErrorMacro on the main thread.
+ * Owns an Embree device and one scene, shares the surfaces' vertex and index buffers with
+ * Embree (the surfaces must outlive the scene), and records the first error Embree reports
+ * through its device callback, so that the filters can turn it into a vtkErrorMacro on the main
+ * thread.
  * After Build() the scene may be queried from any number of threads, through
  * vtkApertureRayPacket.
  *
@@ -35,8 +36,8 @@
  * costs on every occluded ray. Only where the rules can reject a hit do triangles get it: those
  * whose normal is within acos(PullBack) of 90 degrees from, or against, the normal of a
  * receiving point at one of their vertices, and those that pass within the Near distance of some
- * receiving point's ray start. Every other hit blocks, and those triangles are a geometry
- * without a filter.
+ * receiving point's ray start. Every other hit blocks: those triangles are geometries without
+ * a filter, over runs of the surface's own index buffer (SetMaximumSharedRuns()).
  */
 
 #ifndef vtkApertureRayScene_h
@@ -104,6 +105,21 @@ public:
    * Triangles that got the hit filter in the last Build(), of all.
    */
   vtkIdType GetNumberOfFilteredTriangles() const { return this->FilteredTriangles; }
+
+  ///@{
+  /**
+   * The triangles without the hit filter are mostly long runs between filtered ones. Up to
+   * this many runs a surface (default 1024), each run is a geometry over the surface's own
+   * index buffer; more are copied into one geometry (0: always copied). Set before Build().
+   */
+  void SetMaximumSharedRuns(vtkIdType runs) { this->MaximumSharedRuns = runs; }
+  vtkIdType GetMaximumSharedRuns() const { return this->MaximumSharedRuns; }
+  ///@}
+
+  /**
+   * Runs of triangles shared with the surfaces in the last Build().
+   */
+  vtkIdType GetNumberOfSharedRuns() const { return this->SharedRuns; }
 
   RTCScene GetScene() const { return this->Scene; }
 
@@ -185,17 +201,21 @@ private:
   bool Failed();
   // Adds a surface as a geometry without filter and one with it (`risky`: per triangle).
   bool AddSurface(const vtkApertureSurface& surface, const std::vector<unsigned char>& risky);
-  bool AddGeometry(const vtkApertureSurface& surface, const std::vector<std::uint32_t>& indices,
-    Filtered* filtered);
+  // A triangle geometry over `triangles` index triples the surface or the scene owns.
+  bool AddGeometry(const vtkApertureSurface& surface, const std::uint32_t* indices,
+    size_t triangles, Filtered* filtered);
 
   RTCDevice Device = nullptr;
   RTCScene Scene = nullptr;
   std::mutex ErrorMutex;
   std::string Error;
-  // Index buffers Embree shares: those of the unfiltered geometries, and the filtered ones.
+  // Index buffers Embree shares beside the surfaces': unfiltered triangles copied when their
+  // runs are many, and the filtered ones.
   std::vector<std::vector<std::uint32_t>> Plain;
   std::vector<std::unique_ptr<Filtered>> Risky;
   vtkIdType FilteredTriangles = 0;
+  vtkIdType MaximumSharedRuns = 1024;
+  vtkIdType SharedRuns = 0;
 };
 
 #endif
