@@ -308,7 +308,8 @@ public:
   std::vector<vtkPolyData*> Occluders;
   vtkSmartPointer<vtkPolyData> RemoteOccluders;
   std::vector<vtkApertureSurface> OccluderSurfaces;
-  vtkApertureRayScene Scene;
+  // Given back after the rays: on a large surface the BVH is the largest part of a run.
+  std::unique_ptr<vtkApertureRayScene> Scene{ new vtkApertureRayScene };
   vtkIdType TotalPoints = 0;
   vtkIdType NoData = 0;
   bool Horizons = false;
@@ -732,10 +733,10 @@ bool vtkAperturePrecompute::vtkRun::BuildScene()
   {
     occluders.push_back(&s);
   }
-  if (!this->Scene.Build(
+  if (!this->Scene->Build(
         receivers, occluders, this->Self->AccelerationStructure, this->Self->EmbreeConfiguration))
   {
-    vtkErrorWithObjectMacro(this->Self, "Embree failed: " << this->Scene.GetError());
+    vtkErrorWithObjectMacro(this->Self, "Embree failed: " << this->Scene->GetError());
     return false;
   }
   return true;
@@ -777,13 +778,13 @@ bool vtkAperturePrecompute::vtkRun::Cast()
     r->Results.Occlusion.assign(self->ComputeAmbientOcclusion ? n : 0, 0.0f);
     r->Results.Mask.assign(mask.Side > 0 ? n * mask.Side * mask.Side / 8 : 0, 0);
     const CastRays cast(
-      r->Surface, this->Scene, sampler, maximumDistance, mask, needed, r->Results);
+      r->Surface, *this->Scene, sampler, maximumDistance, mask, needed, r->Results);
     auto progress = [&](vtkIdType traced)
     {
       self->UpdateProgress(static_cast<double>(done + traced) / std::max<vtkIdType>(casting, 1));
       return !self->GetAbortExecute();
     };
-    if (!this->Scene.TraceInBatches(cast.GetNumberOfPoints(), batch, 16, cast, progress, error))
+    if (!this->Scene->TraceInBatches(cast.GetNumberOfPoints(), batch, 16, cast, progress, error))
     {
       vtkErrorWithObjectMacro(self, "Embree failed while tracing: " << error);
       return false;
@@ -795,6 +796,7 @@ bool vtkAperturePrecompute::vtkRun::Cast()
     }
     done += cast.GetNumberOfPoints();
   }
+  this->Scene.reset();
   return true;
 }
 
