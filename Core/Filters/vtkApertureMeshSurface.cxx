@@ -816,7 +816,6 @@ void Build::PointOfEachInput()
 void Build::CornerPoints()
 {
   const std::vector<vtkIdType>& map = this->S.InputPoints;
-  std::vector<unsigned char> split(this->N, 0);
   std::vector<vtkIdType> local;
   size_t t = 0;        // the first triangle of the cell
   vtkIdType cell = 0;  // polygons, then strips
@@ -837,13 +836,12 @@ void Build::CornerPoints()
         if (local[k] >= 0 && local[k] != map[ids[k]])
         {
           splits.push_back({ c, ids[k], local[k] });
-          split[ids[k]] = 1;
         }
       }
       first += npts;
     }
   }
-  this->S.SplitPoints = std::count(split.begin(), split.end(), 1);
+  this->S.CountSplitPoints();
 }
 
 //------------------------------------------------------------------------------
@@ -882,8 +880,8 @@ void Build::StripTriangles()
     for (int k = 0; k < 3; ++k)
     {
       this->S.StripTriangles.push_back(in[k]);
-      this->S.StripTriangles.push_back(
-        this->PointOf(3 * t + k) >= 0 ? this->PointOf(3 * t + k) : map[in[k]]);
+      const vtkIdType point = this->PointOf(3 * t + k);
+      this->S.StripTriangles.push_back(point >= 0 ? point : map[in[k]]);
     }
   }
 }

@@ -253,6 +253,20 @@ void vtkApertureSurface::CountFlippedNormals()
 }
 
 //------------------------------------------------------------------------------
+void vtkApertureSurface::CountSplitPoints()
+{
+  std::vector<unsigned char> split(this->InputPoints.size(), 0);
+  for (const auto* splits : { &this->PolySplits, &this->StripSplits })
+  {
+    for (const SplitCorner& corner : *splits)
+    {
+      split[corner.InputPoint] = 1;
+    }
+  }
+  this->SplitPoints = std::count(split.begin(), split.end(), 1);
+}
+
+//------------------------------------------------------------------------------
 void vtkApertureSurface::KeepInputs(vtkPolyData* input)
 {
   const vtkIdType n = input->GetNumberOfPoints();
@@ -281,15 +295,7 @@ void vtkApertureSurface::KeepInputs(vtkPolyData* input)
   this->BreakStrips = this->BreakStrips && strips > 0;
 
   // The counts, over the input's points only.
-  std::vector<unsigned char> split(n, 0);
-  for (const auto* splits : { &this->PolySplits, &this->StripSplits })
-  {
-    for (const SplitCorner& corner : *splits)
-    {
-      split[corner.InputPoint] = 1;
-    }
-  }
-  this->SplitPoints = std::count(split.begin(), split.end(), 1);
+  this->CountSplitPoints();
   this->UnusablePoints = 0;
   this->UndefinedNormals = 0;
   for (vtkIdType i = 0; i < n; ++i)

@@ -187,6 +187,11 @@ public:
   vtkIdType SplitPoints = 0;
   ///@}
 
+  /**
+   * Sets SplitPoints: the input points with a split corner (PolySplits, StripSplits).
+   */
+  void CountSplitPoints();
+
   /// Whether a crease runs across a strip (the output then makes the strips triangles).
   bool BreakStrips = false;
 
