@@ -109,9 +109,14 @@ void vtkApertureSurface::InitializeBounds(double bounds[6])
 //------------------------------------------------------------------------------
 void vtkApertureSurface::OriginOf(const double bounds[6], double origin[3])
 {
+  const double side =
+    std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
+  const double step =
+    side > 0.0 && side < VTK_DOUBLE_MAX ? std::ldexp(1.0, std::ilogb(side) - 4) : 0.0;
   for (int k = 0; k < 3; ++k)
   {
-    origin[k] = bounds[0] <= bounds[1] ? 0.5 * (bounds[2 * k] + bounds[2 * k + 1]) : 0.0;
+    const double middle = bounds[0] <= bounds[1] ? 0.5 * (bounds[2 * k] + bounds[2 * k + 1]) : 0.0;
+    origin[k] = step > 0.0 ? step * std::round(middle / step) : middle;
   }
 }
 

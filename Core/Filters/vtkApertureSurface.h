@@ -78,7 +78,9 @@ public:
   static void WorldPoints(vtkPoints* points, std::vector<double>& world);
 
   /**
-   * The local origin of a scene: the centre of its bounds (0 for empty bounds).
+   * The local origin of a scene: the centre of its bounds rounded to a sixteenth of the power of
+   * two at or below their largest side (0 for empty bounds), so that a surface that moves a
+   * little keeps its local coordinates, and with them its unmoved rays (vtkApertureHistory).
    */
   static void OriginOf(const double bounds[6], double origin[3]);
 
