@@ -12,16 +12,28 @@
 
 #include "vtkApertureSurface.h"
 #include "vtkDataObject.h"
+#include "vtkFloatArray.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <unordered_set>
 
 namespace
 {
 // A moved triangle's box spanning more grid cells than this marks every point instead.
 constexpr double MaximumCellsPerBox = 32768.0;
+
+// A retraced point whose rays' reach spans more cells of moved boxes than this casts every ray.
+constexpr double MaximumCellsPerReach = 512.0;
+
+// The key of grid cell (i, j, k).
+std::uint64_t CellKey(std::int64_t i, std::int64_t j, std::int64_t k)
+{
+  const std::uint64_t m = 0x1FFFFF; // 21 bits each
+  return (std::uint64_t(i) & m) | (std::uint64_t(j) & m) << 21 | (std::uint64_t(k) & m) << 42;
+}
 
 // The world coordinates of a surface's vertices (3 each).
 std::vector<double> WorldVertices(const vtkApertureSurface& surface)
@@ -69,7 +81,7 @@ public:
       {
         for (std::int64_t k = lo[2]; k <= hi[2]; ++k)
         {
-          this->Cells.insert(Key(i, j, k));
+          this->Cells.insert(CellKey(i, j, k));
         }
       }
     }
@@ -88,16 +100,10 @@ public:
       }
       ijk[c] = static_cast<std::int64_t>(cell);
     }
-    return this->Cells.count(Key(ijk[0], ijk[1], ijk[2])) > 0;
+    return this->Cells.count(CellKey(ijk[0], ijk[1], ijk[2])) > 0;
   }
 
 private:
-  static std::uint64_t Key(std::int64_t i, std::int64_t j, std::int64_t k)
-  {
-    const std::uint64_t m = 0x1FFFFF; // 21 bits each
-    return (std::uint64_t(i) & m) | (std::uint64_t(j) & m) << 21 | (std::uint64_t(k) & m) << 42;
-  }
-
   double Size;
   double Reach;
   std::unordered_set<std::uint64_t> Cells;
@@ -213,8 +219,10 @@ std::vector<unsigned char> vtkApertureHistory::Needed(
   const vtkApertureSurface& surface, const std::vector<double>& world, double reach)
 {
   const vtkIdType n = surface.GetNumberOfPoints();
-  std::vector<unsigned char> all(n, 1);
+  std::vector<unsigned char> all(n, CAST);
   this->Sources.assign(n, -1);
+  this->Plans.clear();
+  this->Reach = reach;
   this->Matched =
     !this->Remembered ? NO_SURFACE : (this->SameCells(surface) ? SAME_CELLS : OTHER_CELLS);
   if (!(reach > 0.0 && reach < 1e300) || world.size() != this->World.size() ||
@@ -248,14 +256,159 @@ std::vector<unsigned char> vtkApertureHistory::Needed(
       }
     }
   }
-  std::vector<unsigned char> needed(n, 0);
+  this->GroupMovedBoxes(surface, moved, now);
+  std::vector<unsigned char> needed(n, REUSE);
   const std::vector<vtkIdType> match = this->MatchSides(surface);
   for (vtkIdType p = 0; p < n; ++p)
   {
-    needed[p] = match[p] < 0 || cells.Contains(&now[3 * size_t(surface.PointVertex[p])]) ? 1 : 0;
-    this->Sources[p] = needed[p] ? -1 : match[p];
+    if (match[p] >= 0 && !cells.Contains(&now[3 * size_t(surface.PointVertex[p])]))
+    {
+      this->Sources[p] = match[p];
+    }
+    else if (match[p] >= 0 && this->SameRays(surface, p, match[p]))
+    {
+      needed[p] = RETRACE;
+      this->Sources[p] = match[p];
+    }
+    else
+    {
+      needed[p] = CAST;
+    }
   }
+  this->Plans = needed;
   return needed;
+}
+
+//------------------------------------------------------------------------------
+bool vtkApertureHistory::SameRays(const vtkApertureSurface& surface, vtkIdType p, vtkIdType q) const
+{
+  auto same = [p, q](const auto& now, const auto& then, int size)
+  { return std::equal(&now[size * p], &now[size * p] + size, &then[size * q]); };
+  return !this->Results.Rays.empty() &&
+    std::equal(this->Origin, this->Origin + 3, surface.Origin) && surface.Valid[p] &&
+    this->Valid[q] && same(surface.Start, this->Start, 3) &&
+    std::equal(surface.GetNormal(p), surface.GetNormal(p) + 3, &this->Normal[3 * q]) &&
+    same(surface.Offset, this->Offset, 1) && same(surface.Near, this->Near, 1) &&
+    same(surface.Key, this->RayKey, 1);
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureHistory::GroupMovedBoxes(const vtkApertureSurface& surface,
+  const std::vector<unsigned char>& moved, const std::vector<double>& now)
+{
+  this->MovedBoxes.clear();
+  this->BoxOfCell.clear();
+  this->BoxSpan = 0.0f;
+  for (size_t t = 0; t < surface.Triangles.size(); t += 3)
+  {
+    const std::uint32_t* v = &surface.Triangles[t];
+    if (!moved[v[0]] && !moved[v[1]] && !moved[v[2]])
+    {
+      continue;
+    }
+    const std::vector<double>& before = this->VertexWorld;
+    for (const std::vector<double>* at : { &before, &now })
+    {
+      double box[6] = { 1e300, 1e300, 1e300, -1e300, -1e300, -1e300 };
+      for (int c = 0; c < 3; ++c)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          const double x = (*at)[3 * size_t(v[c]) + k] - surface.Origin[k];
+          box[k] = std::min(box[k], x);
+          box[k + 3] = std::max(box[k + 3], x);
+        }
+      }
+      this->AddMovedBox(box);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureHistory::AddMovedBox(const double box[6])
+{
+  // Embree's hits and the rays' box tests round in float: a margin far above both.
+  const double size = std::max({ std::abs(box[0]), std::abs(box[1]), std::abs(box[2]),
+    std::abs(box[3]), std::abs(box[4]), std::abs(box[5]) });
+  const double margin = 1e-4 * this->Reach + 1e-5 * size;
+  std::int64_t ijk[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    const double cell = std::floor(box[k] / this->Reach);
+    if (!(std::abs(cell) < 1e15))
+    {
+      this->BoxSpan = std::numeric_limits<float>::infinity(); // no point can look it up
+      return;
+    }
+    ijk[k] = static_cast<std::int64_t>(cell);
+  }
+  const auto added = this->BoxOfCell.emplace(
+    CellKey(ijk[0], ijk[1], ijk[2]), static_cast<std::uint32_t>(this->MovedBoxes.size() / 6));
+  if (added.second)
+  {
+    const float inf = std::numeric_limits<float>::infinity();
+    this->MovedBoxes.insert(this->MovedBoxes.end(), { inf, inf, inf, -inf, -inf, -inf });
+  }
+  float* b = &this->MovedBoxes[6 * size_t(added.first->second)];
+  for (int k = 0; k < 3; ++k)
+  {
+    b[k] = std::min(b[k], static_cast<float>(box[k] - margin));
+    b[k + 3] = std::max(b[k + 3], static_cast<float>(box[k + 3] + margin));
+    this->BoxSpan = std::max(this->BoxSpan, b[k + 3] - b[k]);
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkApertureHistory::GetMovedBoxes(const float position[3], float* boxes, int capacity) const
+{
+  // A box within reach has its lower corner in these cells.
+  const double r = this->Reach;
+  std::int64_t lo[3], hi[3];
+  double cells = 1.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    const double a = std::floor((position[k] - r - this->BoxSpan) / r);
+    const double b = std::floor((position[k] + r) / r);
+    cells *= b - a + 1.0;
+    if (!(cells <= MaximumCellsPerReach))
+    {
+      return -1;
+    }
+    lo[k] = static_cast<std::int64_t>(a);
+    hi[k] = static_cast<std::int64_t>(b);
+  }
+  int count = 0;
+  for (std::int64_t i = lo[0]; i <= hi[0]; ++i)
+  {
+    for (std::int64_t j = lo[1]; j <= hi[1]; ++j)
+    {
+      for (std::int64_t k = lo[2]; k <= hi[2]; ++k)
+      {
+        const auto found = this->BoxOfCell.find(CellKey(i, j, k));
+        if (found == this->BoxOfCell.end())
+        {
+          continue;
+        }
+        const float* b = &this->MovedBoxes[6 * size_t(found->second)];
+        double distance2 = 0.0;
+        for (int c = 0; c < 3; ++c)
+        {
+          const double d = std::max({ b[c] - position[c], 0.0f, position[c] - b[c + 3] });
+          distance2 += d * d;
+        }
+        if (distance2 > r * r)
+        {
+          continue;
+        }
+        if (count == capacity)
+        {
+          return -1;
+        }
+        std::copy_n(b, 6, boxes + 6 * count++);
+      }
+    }
+  }
+  return count;
 }
 
 //------------------------------------------------------------------------------
@@ -267,7 +420,7 @@ void vtkApertureHistory::Reuse(Caps& caps) const
   for (size_t p = 0; p < n; ++p)
   {
     const vtkIdType q = this->Sources[p];
-    if (q < 0)
+    if (q < 0 || this->Plans[p] != REUSE)
     {
       continue;
     }
@@ -278,7 +431,18 @@ void vtkApertureHistory::Reuse(Caps& caps) const
       caps.Occlusion[p] = old.Occlusion[q];
     }
     std::copy_n(old.Mask.data() + q * bytes, bytes, caps.Mask.data() + p * bytes);
+    const int words = old.RayWords;
+    if (!caps.Rays.empty() && !old.Rays.empty() && words == caps.RayWords)
+    {
+      std::copy_n(&old.Rays[q * words], words, &caps.Rays[p * words]);
+    }
   }
+}
+
+//------------------------------------------------------------------------------
+const std::uint64_t* vtkApertureHistory::GetRays(vtkIdType point) const
+{
+  return &this->Results.Rays[size_t(this->Sources[point]) * this->Results.RayWords];
 }
 
 //------------------------------------------------------------------------------
@@ -291,6 +455,14 @@ void vtkApertureHistory::Remember(
   this->Triangles = surface.Triangles;
   this->PointVertex = surface.PointVertex;
   this->Results = caps;
+  std::copy_n(surface.Origin, 3, this->Origin);
+  this->Start = surface.Start;
+  const float* normals = surface.Normals->GetPointer(0);
+  this->Normal.assign(normals, normals + 3 * surface.GetNumberOfPoints());
+  this->Offset = surface.Offset;
+  this->Near = surface.Near;
+  this->RayKey = surface.Key;
+  this->Valid = surface.Valid;
 }
 
 //------------------------------------------------------------------------------
@@ -302,5 +474,14 @@ void vtkApertureHistory::Forget()
   this->Triangles.clear();
   this->PointVertex.clear();
   this->Sources.clear();
+  this->Plans.clear();
   this->Results = Caps();
+  this->Start.clear();
+  this->Normal.clear();
+  this->Offset.clear();
+  this->Near.clear();
+  this->RayKey.clear();
+  this->Valid.clear();
+  this->MovedBoxes.clear();
+  this->BoxOfCell.clear();
 }

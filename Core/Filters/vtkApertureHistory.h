@@ -23,6 +23,10 @@
  *   see something else; Needed() marks them, and the points of a vertex whose sides at creases
  *   changed in number; Reuse() copies the others' caps (a vertex's sides in order), Remember()
  *   keeps this update for the next.
+ * - **Rays that pass nowhere near what moved**: a marked point whose rays start where they did,
+ *   the same way (same local coordinates, normal, offsets and key), keeps the answer of every
+ *   ray that passes through none of the boxes around the moved triangles (GetMovedBoxes()), so
+ *   that it casts only the others again (GetRays() holds the last answers).
  */
 
 #ifndef vtkApertureHistory_h
@@ -35,6 +39,7 @@
 #include <cstdint>
 #include <deque>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 class vtkApertureSurface;
@@ -43,11 +48,23 @@ class vtkDataObject;
 class VTKAPERTURELIGHTINGCORE_EXPORT vtkApertureHistory
 {
 public:
-  /// The caps of a surface's receiving points, and their visibility masks.
+  /// The caps of a surface's receiving points, their visibility masks, and for a moving surface
+  /// the answer of each of their rays (a bit each, set where it escaped; RayWords words a point).
   struct Caps
   {
     std::vector<float> BentNormal, Radius, Occlusion;
     std::vector<unsigned char> Mask;
+    std::vector<std::uint64_t> Rays;
+    int RayWords = 0;
+  };
+
+  /// What Needed() says of a receiving point: keep its caps, cast every ray, or cast only the
+  /// rays that pass through a moved triangle's box.
+  enum Plan : unsigned char
+  {
+    REUSE = 0,
+    CAST = 1,
+    RETRACE = 2
   };
 
   /// Empties both kinds of reuse when `key` differs from the last one given.
@@ -64,17 +81,29 @@ public:
   ///@}
 
   /**
-   * Per receiving point of `surface`, 1 where its caps must be cast: every point unless the
-   * remembered surface has the same cells; then the points within `reach` of a triangle with a
-   * vertex that moved, and those of a vertex with another number of sides. `world` holds the same
-   * number of values for each input point: its coordinates, and its given normal if there is one (a
-   * point whose values changed moved).
+   * Per receiving point of `surface`, a Plan: CAST for every point unless the remembered surface
+   * has the same cells; then REUSE except for the points within `reach` of a triangle with a
+   * vertex that moved, and those of a vertex with another number of sides; of these, RETRACE
+   * for the points whose rays are the remembered ones. `world` holds the same number of values
+   * for each input point: its coordinates, and its given normal if there is one (a point whose
+   * values changed moved).
    */
   std::vector<unsigned char> Needed(
     const vtkApertureSurface& surface, const std::vector<double>& world, double reach);
 
-  /// Copies the remembered caps of the points that Needed() did not mark into `caps`.
+  /// Copies the remembered caps (and rays) of the points that Needed() planned to REUSE.
   void Reuse(Caps& caps) const;
+
+  /// The remembered answers of the rays of a point that Needed() planned to RETRACE.
+  const std::uint64_t* GetRays(vtkIdType point) const;
+
+  /**
+   * The boxes (6 values each: lower x, y, z, upper x, y, z, in the surface's local coordinates,
+   * grown by a margin for rounding) around the moved triangles, where they were and where they
+   * are, that lie within the rays' reach of `position`: at most `capacity` into `boxes`. Their
+   * number, or -1 if there are more.
+   */
+  int GetMovedBoxes(const float position[3], float* boxes, int capacity) const;
 
   /// Keeps this update's surface, input coordinates and caps for the next one.
   void Remember(const vtkApertureSurface& surface, std::vector<double> world, const Caps& caps);
@@ -99,6 +128,13 @@ private:
   std::vector<vtkIdType> MatchSides(const vtkApertureSurface& surface) const;
   std::vector<unsigned char> MovedVertices(
     const vtkApertureSurface& surface, const std::vector<double>& world) const;
+  // Whether point `p` of `surface` casts the rays that remembered point `q` cast.
+  bool SameRays(const vtkApertureSurface& surface, vtkIdType p, vtkIdType q) const;
+  // Merges the moved triangles' boxes by cells of the reach's size (MovedBoxes, BoxOfCell).
+  void GroupMovedBoxes(const vtkApertureSurface& surface, const std::vector<unsigned char>& moved,
+    const std::vector<double>& now);
+  // Grows the box of `box`'s cell to hold it (local coordinates: lower x, y, z, upper x, y, z).
+  void AddMovedBox(const double box[6]);
 
   std::string Key;
   struct Step
@@ -114,7 +150,19 @@ private:
   std::vector<double> VertexWorld; // the surface's vertices, world coordinates (3 each)
   std::vector<std::uint32_t> Triangles, PointVertex;
   std::vector<vtkIdType> Sources; // Needed()'s match of each point, -1 where cast
+  std::vector<unsigned char> Plans;
   Caps Results;
+  // Where the remembered points' rays started, and which way (vtkApertureSurface's arrays).
+  double Origin[3] = { 0.0, 0.0, 0.0 };
+  std::vector<float> Start, Normal, Offset, Near;
+  std::vector<std::uint64_t> RayKey;
+  std::vector<unsigned char> Valid;
+  // The moved triangles' boxes, merged by the cell of the reach's size that holds their lower
+  // corner: 6 values each, the box of each cell, the largest side of a box, the reach.
+  std::vector<float> MovedBoxes;
+  std::unordered_map<std::uint64_t, std::uint32_t> BoxOfCell;
+  float BoxSpan = 0.0f;
+  double Reach = 0.0;
 };
 
 #endif

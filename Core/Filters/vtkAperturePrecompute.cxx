@@ -47,6 +47,8 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <algorithm>
+#include <atomic>
+#include <bitset>
 #include <cfloat>
 #include <cmath>
 #include <limits>
@@ -70,20 +72,28 @@ struct MaskSettings
   int RaysSide = 1;
 };
 
-// Casts the rays of a range of the `needed` receiving points of one surface (all when empty),
-// in Morton order, and writes their caps.
+// A retraced point with more moved boxes than this within its reach casts every ray.
+constexpr int MaximumBoxes = 8;
+
+// Casts the rays of a range of the `needed` receiving points of one surface (all when empty:
+// otherwise vtkApertureHistory's plans, with `history` for the points to RETRACE), in Morton
+// order, writes their caps, and counts the rays it traced into `traced`.
 class CastRays
 {
 public:
   CastRays(const vtkApertureSurface& surface, const vtkApertureRayScene& scene,
     const vtkApertureRaySampler& sampler, float maximumDistance, const MaskSettings& mask,
-    const std::vector<unsigned char>& needed, Caps& caps)
+    const std::vector<unsigned char>& needed, const vtkApertureHistory* history, Caps& caps,
+    std::atomic<vtkIdType>& traced)
     : Surface(surface)
     , Scene(scene)
     , Sampler(sampler)
     , MaximumDistance(maximumDistance)
     , Mask(mask)
+    , Needed(needed)
+    , History(history)
     , Out(caps)
+    , Traced(traced)
   {
     std::vector<float> positions(3 * surface.GetNumberOfPoints());
     for (vtkIdType i = 0; i < surface.GetNumberOfPoints(); ++i)
@@ -106,15 +116,16 @@ public:
     vtkApertureRayPacket packet(this->Scene, this->Surface);
     std::vector<int> seen(this->Mask.Side * this->Mask.Side);
     std::vector<float> directions;
+    vtkIdType traced = 0;
     for (vtkIdType k = begin; k < end; ++k)
     {
       const vtkIdType id = this->Order[k];
       if (this->Surface.Valid[id])
       {
-        this->Cast(packet, id);
+        traced += this->Cast(packet, id);
         if (this->Mask.Side > 0)
         {
-          this->CastMask(packet, id, seen, directions);
+          traced += this->CastMask(packet, id, seen, directions);
         }
       }
       else
@@ -125,15 +136,43 @@ public:
         this->Out.Radius[id] = 0.0f;
       }
     }
+    this->Traced += traced;
   }
 
 private:
-  void Cast(vtkApertureRayPacket& packet, vtkIdType id) const
+  // The lanes (bits) whose rays pass through none of the `moved` boxes, cleared.
+  static unsigned int Keep(vtkApertureRayPacket& packet, int count, const float* boxes, int moved)
+  {
+    unsigned int kept = 0;
+    for (int lane = 0; lane < count; ++lane)
+    {
+      if (!packet.Crosses(lane, boxes, moved))
+      {
+        packet.Clear(lane);
+        kept |= 1u << lane;
+      }
+    }
+    return kept;
+  }
+
+  // The point's caps from its rays; returns how many it traced. A point to RETRACE takes the
+  // last answer of each ray that passes through no moved box (lanes cleared before the trace).
+  vtkIdType Cast(vtkApertureRayPacket& packet, vtkIdType id) const
   {
     const float* nrm = this->Surface.GetNormal(id);
     vtkApertureRaySampler::Point point;
     this->Sampler.Begin(nrm, this->Surface.Key[id], point);
     const int n = this->Sampler.GetNumberOfRays();
+    float boxes[6 * MaximumBoxes];
+    int moved = -1;
+    if (!this->Needed.empty() && this->Needed[id] == vtkApertureHistory::RETRACE)
+    {
+      moved = this->History->GetMovedBoxes(&this->Surface.Start[3 * id], boxes, MaximumBoxes);
+    }
+    const std::uint64_t* last = moved >= 0 ? this->History->GetRays(id) : nullptr;
+    std::uint64_t* answers =
+      this->Out.Rays.empty() ? nullptr : &this->Out.Rays[size_t(id) * this->Out.RayWords];
+    vtkIdType traced = 0;
     int visible = 0;
     double sum[3] = { 0.0, 0.0, 0.0 };
     double cosSum = 0.0;
@@ -143,10 +182,23 @@ private:
       this->Sampler.Directions(
         point, first, count, packet.DirectionsX(), packet.DirectionsY(), packet.DirectionsZ());
       packet.SetFan(id, count, this->MaximumDistance);
-      packet.Trace();
-      for (int lane = 0; lane < Lanes; ++lane)
+      const unsigned int kept = last ? Keep(packet, count, boxes, moved) : 0u;
+      const int casting = count - static_cast<int>(std::bitset<Lanes>(kept).count());
+      if (casting > 0)
       {
-        if (packet.Visible(lane))
+        packet.Trace();
+        traced += casting;
+      }
+      for (int lane = 0; lane < count; ++lane)
+      {
+        const int ray = first + lane;
+        const bool escaped =
+          kept >> lane & 1u ? (last[ray / 64] >> (ray % 64) & 1u) != 0 : packet.Visible(lane);
+        if (answers && escaped)
+        {
+          answers[ray / 64] |= std::uint64_t(1) << (ray % 64);
+        }
+        if (escaped)
         {
           const double d[3] = { packet.DirectionX(lane), packet.DirectionY(lane),
             packet.DirectionZ(lane) };
@@ -172,10 +224,12 @@ private:
       // Uniform hemisphere samples: (1/pi) * integral of V cos = (2/n) * sum of V cos.
       this->Out.Occlusion[id] = static_cast<float>(std::min(1.0, 2.0 * cosSum / n));
     }
+    return traced;
   }
 
-  // The point's mask: RaysSide² rays on a sub-grid of each cell; open where half escape.
-  void CastMask(vtkApertureRayPacket& packet, vtkIdType id, std::vector<int>& seen,
+  // The point's mask: RaysSide² rays on a sub-grid of each cell; open where half escape. Returns
+  // how many rays it traced.
+  vtkIdType CastMask(vtkApertureRayPacket& packet, vtkIdType id, std::vector<int>& seen,
     std::vector<float>& directions) const
   {
     const float* nrm = this->Surface.GetNormal(id);
@@ -209,6 +263,7 @@ private:
     {
       bytes[cell / 8] |= 2 * seen[cell] >= per * per ? 1 << (cell % 8) : 0;
     }
+    return rays;
   }
 
   const vtkApertureSurface& Surface;
@@ -216,7 +271,10 @@ private:
   const vtkApertureRaySampler& Sampler;
   float MaximumDistance;
   MaskSettings Mask;
+  const std::vector<unsigned char>& Needed;
+  const vtkApertureHistory* History;
   Caps& Out;
+  std::atomic<vtkIdType>& Traced;
   std::vector<std::uint32_t> Order;
 };
 
@@ -763,10 +821,11 @@ bool vtkAperturePrecompute::vtkRun::Cast()
   {
     casting += r->Surface.GetNumberOfPoints();
   }
-  casting = this->Reusable ? std::count(this->Needed.begin(), this->Needed.end(), 1) : casting;
+  casting = this->Reusable ? casting - self->NumberOfReusedPoints : casting;
   self->NumberOfSurfacePoints = casting;
   const std::vector<unsigned char> all; // CastRays: every point
   const std::vector<unsigned char>& needed = this->Reusable ? this->Needed : all;
+  std::atomic<vtkIdType> traced(0);
   vtkIdType done = 0;
   self->UpdateProgress(0.0);
   std::string error;
@@ -777,8 +836,11 @@ bool vtkAperturePrecompute::vtkRun::Cast()
     r->Results.Radius.resize(n);
     r->Results.Occlusion.assign(self->ComputeAmbientOcclusion ? n : 0, 0.0f);
     r->Results.Mask.assign(mask.Side > 0 ? n * mask.Side * mask.Side / 8 : 0, 0);
-    const CastRays cast(
-      r->Surface, *this->Scene, sampler, maximumDistance, mask, needed, r->Results);
+    // A moving surface keeps each ray's answer for the next update.
+    r->Results.RayWords = this->Reusable ? (self->NumberOfRays + 63) / 64 : 0;
+    r->Results.Rays.assign(size_t(n) * r->Results.RayWords, 0);
+    const CastRays cast(r->Surface, *this->Scene, sampler, maximumDistance, mask, needed,
+      self->History.get(), r->Results, traced);
     auto progress = [&](vtkIdType traced)
     {
       self->UpdateProgress(static_cast<double>(done + traced) / std::max<vtkIdType>(casting, 1));
@@ -795,6 +857,7 @@ bool vtkAperturePrecompute::vtkRun::Cast()
       return true;
     }
     done += cast.GetNumberOfPoints();
+    self->NumberOfRaysTraced = traced;
   }
   this->Scene.reset();
   return true;
@@ -1053,6 +1116,7 @@ int vtkAperturePrecompute::Compute(
     ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT())
     : nullptr;
   this->NumberOfSurfacePoints = 0;
+  this->NumberOfRaysTraced = 0;
   this->UsedHorizons = false;
   if (!input || !output)
   {
@@ -1140,6 +1204,7 @@ void vtkAperturePrecompute::PrintSelf(ostream& os, vtkIndent indent)
     "NewTopology" };
   os << indent << "LastUpdate: " << updates[this->LastUpdate] << "\n";
   os << indent << "NumberOfReusedPoints: " << this->NumberOfReusedPoints << "\n";
+  os << indent << "NumberOfRaysTraced: " << this->NumberOfRaysTraced << "\n";
 }
 
 //------------------------------------------------------------------------------

@@ -450,8 +450,10 @@ public:
    * cells and points as the last one's, only the receiving points within reach of a triangle
    * that moved (MaximumDistance plus the rays' offsets, where the triangle was or where it is)
    * cast rays again; the others keep their caps. Needs LimitDistance (unbounded rays can see
-   * any motion). Serial runs of one polydata without refinement only. Default off: the filter
-   * then keeps the last surface's triangles, coordinates and caps (about 70 bytes a point).
+   * any motion). Serial runs of one polydata without refinement only. Of the points that cast
+   * again, those whose rays did not change cast only the rays that pass near a moved triangle
+   * (NumberOfRaysTraced). Default off: the filter then keeps the last surface's triangles,
+   * coordinates, rays and caps (about 100 bytes and a bit a ray per point).
    */
   vtkSetMacro(ReuseUnmovedPoints, bool);
   vtkGetMacro(ReuseUnmovedPoints, bool);
@@ -489,6 +491,15 @@ public:
 
   /// Receiving points whose caps the last update reused (MOVED_POINTS).
   vtkGetMacro(NumberOfReusedPoints, vtkIdType);
+
+  /**
+   * The rays the last update traced (visibility-mask rays included). Below
+   * NumberOfSurfacePoints x NumberOfRays after a MOVED_POINTS update: a point near moved
+   * triangles whose own rays did not change (it did not move, nor did its normal) casts again
+   * only its rays that pass through a box around the moved triangles, and keeps the last answer
+   * of the others.
+   */
+  vtkGetMacro(NumberOfRaysTraced, vtkIdType);
 
   ///@{
   /**
@@ -548,6 +559,7 @@ protected:
   bool KeyRaysByPointId = false;
   int LastUpdate = COMPUTED;
   vtkIdType NumberOfReusedPoints = 0;
+  vtkIdType NumberOfRaysTraced = 0;
   vtkMultiProcessController* Controller = nullptr;
   std::string BentNormalArrayName = "BentNormal";
   std::string ApertureRadiusArrayName = "ApertureRadius";

@@ -12,6 +12,8 @@
 
 #include "vtkApertureSurface.h"
 
+#include <algorithm>
+
 //------------------------------------------------------------------------------
 vtkApertureRayPacket::vtkApertureRayPacket(
   const vtkApertureRayScene& scene, const vtkApertureSurface& source, bool coherent)
@@ -40,4 +42,35 @@ vtkApertureRayPacket::vtkApertureRayPacket(
 void vtkApertureRayPacket::Trace()
 {
   rtcOccluded16(this->Valid, this->Scene, &this->Context.Base, &this->Ray);
+}
+
+//------------------------------------------------------------------------------
+bool vtkApertureRayPacket::Crosses(int lane, const float* boxes, int count) const
+{
+  const float o[3] = { this->Ray.org_x[lane], this->Ray.org_y[lane], this->Ray.org_z[lane] };
+  const float d[3] = { this->Ray.dir_x[lane], this->Ray.dir_y[lane], this->Ray.dir_z[lane] };
+  for (int b = 0; b < count; ++b)
+  {
+    // The part of the ray within each slab of the box.
+    const float* box = boxes + 6 * b;
+    float t0 = this->Ray.tnear[lane], t1 = this->Ray.tfar[lane];
+    for (int k = 0; k < 3 && t0 <= t1; ++k)
+    {
+      if (d[k] != 0.0f)
+      {
+        const float a = (box[k] - o[k]) / d[k], c = (box[k + 3] - o[k]) / d[k];
+        t0 = std::max(t0, std::min(a, c));
+        t1 = std::min(t1, std::max(a, c));
+      }
+      else if (o[k] < box[k] || o[k] > box[k + 3])
+      {
+        t1 = -1.0f;
+      }
+    }
+    if (t0 <= t1)
+    {
+      return true;
+    }
+  }
+  return false;
 }

@@ -113,6 +113,12 @@ public:
   void Trace();
 
   /**
+   * Whether lane `lane`'s ray, from where it is traced to its end, passes through one of the
+   * `count` boxes (6 values each: lower x, y, z, upper x, y, z).
+   */
+  bool Crosses(int lane, const float* boxes, int count) const;
+
+  /**
    * Whether lane `lane` cast a ray and nothing blocked it.
    */
   bool Visible(int lane) const { return this->Valid[lane] && this->Ray.tfar[lane] >= 0.0f; }

@@ -10,10 +10,10 @@
 =========================================================================*/
 // vtkAperturePrecompute on a time series: a ground whose bump moves from step to step (a
 // temporal source of this file). Its time steps pass through; a step in which the bump moves
-// casts rays only near it and gives what a fresh filter gives on that step; a second visit to a
-// step is a lookup of the same output; a step with other cells computes everything (and says
-// so); a surface moved as a whole keeps every point's rays when they follow point ids, not
-// positions.
+// casts rays only near it (and of the unmoved points' rays, only those that pass near it) and
+// gives what a fresh filter gives on that step; a second visit to a step is a lookup of the same
+// output; a step with other cells computes everything (and says so); a surface moved as a whole
+// keeps every point's rays when they follow point ids, not positions.
 
 #include "vtkAperturePrecompute.h"
 
@@ -173,6 +173,11 @@ void TestSteps()
   Check(filter->GetLastUpdate() == vtkAperturePrecompute::MOVED_POINTS, "a moved bump: reuse");
   Check(cast > 0 && cast < all / 2, "a moved bump: fewer than half cast rays", cast, all / 2.0);
   Check(cast + filter->GetNumberOfReusedPoints() == all, "every point cast or reused");
+  // Points near the bump that stayed where they were cast only their rays that pass near it.
+  const vtkIdType traced = filter->GetNumberOfRaysTraced();
+  std::cout << "bump moved: " << traced << " of " << cast * 64 << " rays traced\n";
+  Check(traced > 0 && traced < cast * 64 * 3 / 4,
+    "a moved bump: unmoved points trace only rays near it", traced, cast * 48.0);
   double largest, mean;
   Compare(Radius(filter), Cold(source, 2.0), largest, mean);
   std::cout << "moved step against a fresh filter: largest |d radius| " << largest << ", mean "
