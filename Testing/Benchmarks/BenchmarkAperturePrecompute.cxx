@@ -333,7 +333,7 @@ void MovingSurface(
     filter->ReuseUnmovedPointsOn();
   };
   double warm = 1e300;
-  vtkIdType cast = 0, all = 0;
+  vtkIdType cast = 0, all = 0, traced = 0;
   for (int r = 0; r < repeats; ++r)
   {
     vtkNew<vtkAperturePrecompute> filter;
@@ -344,6 +344,7 @@ void MovingSurface(
     warm = std::min(warm, Seconds([&]() { filter->Update(); }, 1));
     cast = filter->GetNumberOfSurfacePoints();
     all = cast + filter->GetNumberOfReusedPoints();
+    traced = filter->GetNumberOfRaysTraced();
   }
   const double cold = Seconds(
     [&]()
@@ -355,8 +356,9 @@ void MovingSurface(
     },
     repeats);
   std::printf("| moving surface, %s: update / cold run (goal <= %.1f) | %.3f s / %.3f s = %.2f; "
-              "%lld of %lld points cast rays |\n",
-    what, goal, warm, cold, warm / cold, static_cast<long long>(cast), static_cast<long long>(all));
+              "%lld of %lld points cast rays, %.0f%% of their rays traced |\n",
+    what, goal, warm, cold, warm / cold, static_cast<long long>(cast), static_cast<long long>(all),
+    100.0 * traced / std::max<double>(1.0, double(cast) * rays));
 }
 
 // A surface of at least `triangles`: the bunny split into 4^k triangles each
