@@ -370,7 +370,7 @@ int vtkApertureHistory::GetMovedBoxes(const float position[3], float* boxes, int
     const double a = std::floor((position[k] - r - this->BoxSpan) / r);
     const double b = std::floor((position[k] + r) / r);
     cells *= b - a + 1.0;
-    if (!(cells <= MaximumCellsPerReach))
+    if (!(cells <= MaximumCellsPerReach && std::abs(a) < 1e15 && std::abs(b) < 1e15))
     {
       return -1;
     }
