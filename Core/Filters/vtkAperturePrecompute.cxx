@@ -354,6 +354,8 @@ public:
   bool BuildSurfaces();
   void PlanReuse();
   bool BuildScene();
+  // Whether a moving surface keeps every point's caps (no ray to cast, no BVH to build).
+  bool NothingToCast() const;
   bool Cast();
   void Remember();
   void WriteOutputs(const int* extent);
@@ -776,12 +778,17 @@ void vtkAperturePrecompute::vtkRun::PlanReuse()
   {
     self->LastUpdate = match == vtkApertureHistory::SAME_CELLS ? MOVED_POINTS : NEW_TOPOLOGY;
   }
-  self->NumberOfReusedPoints = std::count(this->Needed.begin(), this->Needed.end(), 0);
+  self->NumberOfReusedPoints =
+    std::count(this->Needed.begin(), this->Needed.end(), vtkApertureHistory::REUSE);
 }
 
 //------------------------------------------------------------------------------
 bool vtkAperturePrecompute::vtkRun::BuildScene()
 {
+  if (this->NothingToCast())
+  {
+    return true; // a moving surface of which nothing moved: no BVH to build
+  }
   std::vector<const vtkApertureSurface*> receivers, occluders;
   for (const auto& r : this->Receivers)
   {
@@ -798,6 +805,14 @@ bool vtkAperturePrecompute::vtkRun::BuildScene()
     return false;
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAperturePrecompute::vtkRun::NothingToCast() const
+{
+  return this->Reusable &&
+    std::count(this->Needed.begin(), this->Needed.end(), vtkApertureHistory::REUSE) ==
+    static_cast<std::ptrdiff_t>(this->Needed.size());
 }
 
 //------------------------------------------------------------------------------
@@ -839,6 +854,10 @@ bool vtkAperturePrecompute::vtkRun::Cast()
     // A moving surface keeps each ray's answer for the next update.
     r->Results.RayWords = this->Reusable ? (self->NumberOfRays + 63) / 64 : 0;
     r->Results.Rays.assign(size_t(n) * r->Results.RayWords, 0);
+    if (this->NothingToCast())
+    {
+      continue; // Remember() copies every cap
+    }
     const CastRays cast(r->Surface, *this->Scene, sampler, maximumDistance, mask, needed,
       self->History.get(), r->Results, traced);
     auto progress = [&](vtkIdType traced)

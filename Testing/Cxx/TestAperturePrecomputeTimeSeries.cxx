@@ -12,8 +12,9 @@
 // temporal source of this file). Its time steps pass through; a step in which the bump moves
 // casts rays only near it (and of the unmoved points' rays, only those that pass near it) and
 // gives what a fresh filter gives on that step; a second visit to a step is a lookup of the same
-// output; a step with other cells computes everything (and says so); a surface moved as a whole
-// keeps every point's rays when they follow point ids, not positions.
+// output; a step with other cells computes everything (and says so), and the same step again
+// from a modified source casts nothing; a surface moved as a whole keeps every point's rays when
+// they follow point ids, not positions.
 
 #include "vtkAperturePrecompute.h"
 
@@ -198,6 +199,15 @@ void TestSteps()
   Check(filter->GetNumberOfReusedPoints() == 0, "other cells: nothing reused");
   Compare(Radius(filter), Cold(source, 3.0), largest, mean);
   Check(largest == 0.0, "other cells give what a fresh filter gives", largest, 0.0);
+
+  // The same step from a modified source: nothing moved, so no ray is cast (nor a BVH built).
+  source->Modified();
+  filter->UpdateTimeStep(3.0);
+  Check(filter->GetLastUpdate() == vtkAperturePrecompute::MOVED_POINTS &&
+      filter->GetNumberOfSurfacePoints() == 0 && filter->GetNumberOfRaysTraced() == 0,
+    "nothing moved: no ray cast");
+  Compare(Radius(filter), Cold(source, 3.0), largest, mean);
+  Check(largest == 0.0, "nothing moved: what a fresh filter gives", largest, 0.0);
 }
 
 // The whole surface moved by 0.5 along x: with rays by point id every point keeps its caps
