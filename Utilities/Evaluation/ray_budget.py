@@ -11,6 +11,8 @@ ways to spend fewer rays, measured before building either: the mean over each po
 as if the pilot were the first rays of the budget). Prints the RMS at each budget (and the mean
 rays per point) and the rays each scheme needs for the RMS of today's default (256 stratified
 rays), interpolated in log-log: the baseline that any sampler that casts fewer rays must beat.
+Then the bound on adaptive sampling: how many times fewer rays the best spread of the same
+budget over the points would need, if each point's error were known.
 --quick: the CAD part alone, 16, 64 and 256 rays against 1024. --check: exit 1 unless the
 stratified sampler's RMS falls at each budget and is below random sampling's at each.
 """
@@ -146,6 +148,21 @@ def schemes(mesh, budgets):
     }
 
 
+def adaptive_bound(mesh, reference, rays=64, seeds=(0, 2, 3, 4)):
+    """The most any adaptive sampler could save: the ratio of rays at equal RMS between a budget
+    spread evenly and the same budget spread as well as possible when each point's error is
+    known (its mean square over `seeds` at `rays`, falling as N^-1.5 as the stratified one's)."""
+    square = np.mean([(visible_fraction(mesh, rays, s)[0] - reference) ** 2 for s in seeds],
+                     axis=0)
+    erring = square > 0  # the others are exact whatever their rays: they get none
+    if not erring.any():
+        return math.inf
+    weight = square ** 0.4  # minimises the sum of square * n^-1.5 for a fixed sum of n
+    share = weight / weight.mean()
+    spread = np.sum(square[erring] * share[erring] ** -1.5)
+    return (np.sum(square) / spread) ** (1 / 1.5)
+
+
 def check(errors):
     """Problems with the sampler's convergence in `errors` (scheme: RMS per budget)."""
     stratified, random = errors["stratified (today)"], errors["random"]
@@ -185,6 +202,10 @@ def main():
             print(f"| {name}, {len(reference)} points | {scheme} | {cells} | "
                   f"{rays_needed(rays, errors[scheme], target):.0f} |")
             sys.stdout.flush()
+        if not args.quick:
+            gain = adaptive_bound(mesh, reference)
+            print(f"| {name}, {len(reference)} points | adaptive, each point's error known "
+                  f"(a bound) | {gain:.2f} times fewer rays | {DEFAULT_RAYS / gain:.0f} |")
         problems += [f"{name}: {p}" for p in check(errors)]
     for problem in problems if args.check else []:
         print("FAILED:", problem)
