@@ -225,9 +225,10 @@ std::vector<unsigned char> vtkApertureHistory::Needed(
   this->Reach = reach;
   this->Matched =
     !this->Remembered ? NO_SURFACE : (this->SameCells(surface) ? SAME_CELLS : OTHER_CELLS);
+  // Another local origin rounds every coordinate differently, as a fresh run would: cast all.
   if (!(reach > 0.0 && reach < 1e300) || world.size() != this->World.size() ||
     world.size() % std::max<size_t>(surface.InputPoints.size(), 1) != 0 ||
-    this->Matched != SAME_CELLS)
+    this->Matched != SAME_CELLS || !std::equal(this->Origin, this->Origin + 3, surface.Origin))
   {
     return all;
   }
@@ -284,9 +285,8 @@ bool vtkApertureHistory::SameRays(const vtkApertureSurface& surface, vtkIdType p
 {
   auto same = [p, q](const auto& now, const auto& then, int size)
   { return std::equal(&now[size * p], &now[size * p] + size, &then[size * q]); };
-  return !this->Results.Rays.empty() &&
-    std::equal(this->Origin, this->Origin + 3, surface.Origin) && surface.Valid[p] &&
-    this->Valid[q] && same(surface.Start, this->Start, 3) &&
+  return !this->Results.Rays.empty() && surface.Valid[p] && this->Valid[q] &&
+    same(surface.Start, this->Start, 3) &&
     std::equal(surface.GetNormal(p), surface.GetNormal(p) + 3, &this->Normal[3 * q]) &&
     same(surface.Offset, this->Offset, 1) && same(surface.Near, this->Near, 1) &&
     same(surface.Key, this->RayKey, 1);

@@ -14,7 +14,7 @@
 // gives what a fresh filter gives on that step; a second visit to a step is a lookup of the same
 // output; a step with other cells computes everything (and says so), and the same step again
 // from a modified source casts nothing; a surface moved as a whole keeps every point's rays when
-// they follow point ids, not positions.
+// they follow point ids, not positions; a moved local origin recasts everything.
 
 #include "vtkAperturePrecompute.h"
 
@@ -246,9 +246,44 @@ void TestRaysFollowIds()
 }
 }
 
+// A point on no cell far off the ground moves: no vertex moved, but the scene's local origin
+// (the middle of all points' bounds) did, which rounds every coordinate as a fresh run would:
+// every point casts again.
+void TestOriginMoved()
+{
+  vtkNew<vtkMovingBump> source;
+  source->UpdateTimeStep(0.0);
+  vtkNew<vtkPolyData> surface;
+  surface->DeepCopy(source->GetOutput());
+  const vtkIdType stray = surface->GetPoints()->InsertNextPoint(5.0, 0.0, 0.0);
+  vtkNew<vtkAperturePrecompute> filter;
+  filter->SetInputData(surface);
+  filter->SetNumberOfRays(64);
+  filter->LimitDistanceOn();
+  filter->SetMaximumDistance(0.3);
+  filter->ReuseUnmovedPointsOn();
+  filter->Update();
+  surface->GetPoints()->SetPoint(stray, 9.0, 0.0, 0.0);
+  surface->GetPoints()->Modified();
+  filter->Update();
+  Check(filter->GetLastUpdate() == vtkAperturePrecompute::MOVED_POINTS &&
+      filter->GetNumberOfReusedPoints() == 0,
+    "another local origin: every point casts", filter->GetNumberOfReusedPoints(), 0.0);
+  vtkNew<vtkAperturePrecompute> fresh;
+  fresh->SetInputData(surface);
+  fresh->SetNumberOfRays(64);
+  fresh->LimitDistanceOn();
+  fresh->SetMaximumDistance(0.3);
+  fresh->Update();
+  double largest, mean;
+  Compare(Radius(filter), Radius(fresh), largest, mean);
+  Check(largest == 0.0, "another local origin: what a fresh filter gives", largest, 0.0);
+}
+
 int TestAperturePrecomputeTimeSeries(int, char*[])
 {
   TestSteps();
   TestRaysFollowIds();
+  TestOriginMoved();
   return vtkApertureTest::Result();
 }
