@@ -82,11 +82,11 @@ public:
 
   /**
    * Per receiving point of `surface`, a Plan: CAST for every point unless the remembered surface
-   * has the same cells and local origin; then REUSE except for the points within `reach` of a triangle with a
-   * vertex that moved, and those of a vertex with another number of sides; of these, RETRACE
-   * for the points whose rays are the remembered ones. `world` holds the same number of values
-   * for each input point: its coordinates, and its given normal if there is one (a point whose
-   * values changed moved).
+   * has the same cells and local origin; then REUSE except for the points within `reach` of a
+   * triangle with a vertex that moved, and those of a vertex with another number of sides; of
+   * these, RETRACE for the points whose rays are the remembered ones. `world` holds the same number
+   * of values for each input point: its coordinates, and its given normal if there is one (a point
+   * whose values changed moved).
    */
   std::vector<unsigned char> Needed(
     const vtkApertureSurface& surface, const std::vector<double>& world, double reach);
