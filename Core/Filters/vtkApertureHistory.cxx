@@ -223,6 +223,9 @@ std::vector<unsigned char> vtkApertureHistory::Needed(
   this->Sources.assign(n, -1);
   this->Plans.clear();
   this->Reach = reach;
+  this->MovedBoxes.clear();
+  this->BoxOfCell.clear();
+  this->BoxSpan = 0.0f;
   this->Matched =
     !this->Remembered ? NO_SURFACE : (this->SameCells(surface) ? SAME_CELLS : OTHER_CELLS);
   // Another local origin rounds every coordinate differently, as a fresh run would: cast all.
@@ -255,9 +258,9 @@ std::vector<unsigned char> vtkApertureHistory::Needed(
       {
         return all;
       }
+      this->AddMovedBox(corners, surface.Origin);
     }
   }
-  this->GroupMovedBoxes(surface, moved, now);
   std::vector<unsigned char> needed(n, REUSE);
   const std::vector<vtkIdType> match = this->MatchSides(surface);
   for (vtkIdType p = 0; p < n; ++p)
@@ -293,40 +296,17 @@ bool vtkApertureHistory::SameRays(const vtkApertureSurface& surface, vtkIdType p
 }
 
 //------------------------------------------------------------------------------
-void vtkApertureHistory::GroupMovedBoxes(const vtkApertureSurface& surface,
-  const std::vector<unsigned char>& moved, const std::vector<double>& now)
+void vtkApertureHistory::AddMovedBox(const double* const corners[3], const double origin[3])
 {
-  this->MovedBoxes.clear();
-  this->BoxOfCell.clear();
-  this->BoxSpan = 0.0f;
-  for (size_t t = 0; t < surface.Triangles.size(); t += 3)
+  double box[6] = { 1e300, 1e300, 1e300, -1e300, -1e300, -1e300 };
+  for (int c = 0; c < 3; ++c)
   {
-    const std::uint32_t* v = &surface.Triangles[t];
-    if (!moved[v[0]] && !moved[v[1]] && !moved[v[2]])
+    for (int k = 0; k < 3; ++k)
     {
-      continue;
-    }
-    const std::vector<double>& before = this->VertexWorld;
-    for (const std::vector<double>* at : { &before, &now })
-    {
-      double box[6] = { 1e300, 1e300, 1e300, -1e300, -1e300, -1e300 };
-      for (int c = 0; c < 3; ++c)
-      {
-        for (int k = 0; k < 3; ++k)
-        {
-          const double x = (*at)[3 * size_t(v[c]) + k] - surface.Origin[k];
-          box[k] = std::min(box[k], x);
-          box[k + 3] = std::max(box[k + 3], x);
-        }
-      }
-      this->AddMovedBox(box);
+      box[k] = std::min(box[k], corners[c][k] - origin[k]);
+      box[k + 3] = std::max(box[k + 3], corners[c][k] - origin[k]);
     }
   }
-}
-
-//------------------------------------------------------------------------------
-void vtkApertureHistory::AddMovedBox(const double box[6])
-{
   // Embree's hits and the rays' box tests round in float: a margin far above both.
   const double size = std::max({ std::abs(box[0]), std::abs(box[1]), std::abs(box[2]),
     std::abs(box[3]), std::abs(box[4]), std::abs(box[5]) });

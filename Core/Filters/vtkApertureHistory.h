@@ -130,11 +130,9 @@ private:
     const vtkApertureSurface& surface, const std::vector<double>& world) const;
   // Whether point `p` of `surface` casts the rays that remembered point `q` cast.
   bool SameRays(const vtkApertureSurface& surface, vtkIdType p, vtkIdType q) const;
-  // Merges the moved triangles' boxes by cells of the reach's size (MovedBoxes, BoxOfCell).
-  void GroupMovedBoxes(const vtkApertureSurface& surface, const std::vector<unsigned char>& moved,
-    const std::vector<double>& now);
-  // Grows the box of `box`'s cell to hold it (local coordinates: lower x, y, z, upper x, y, z).
-  void AddMovedBox(const double box[6]);
+  // Grows the box of the reach-sized cell that holds the lower corner of the triangle with
+  // `corners` (world coordinates) to hold it, in the local coordinates of `origin`.
+  void AddMovedBox(const double* const corners[3], const double origin[3]);
 
   std::string Key;
   struct Step

@@ -811,8 +811,7 @@ bool vtkAperturePrecompute::vtkRun::BuildScene()
 bool vtkAperturePrecompute::vtkRun::NothingToCast() const
 {
   return this->Reusable &&
-    std::count(this->Needed.begin(), this->Needed.end(), vtkApertureHistory::REUSE) ==
-    static_cast<std::ptrdiff_t>(this->Needed.size());
+    this->Self->NumberOfReusedPoints == static_cast<vtkIdType>(this->Needed.size());
 }
 
 //------------------------------------------------------------------------------
