@@ -307,21 +307,32 @@ vtkSmartPointer<vtkFloatArray> VisibilityArray(const Sees& sees, vtkIdType m, in
   return visibility;
 }
 
-// The raw visibility, one bit per output point and direction.
+// The raw visibility, one bit per output point and direction, a byte at a time on every core
+// (vtkBitArray's order: value v is bit 0x80 >> v % 8 of byte v / 8; the last byte's unused bits
+// 0).
 vtkSmartPointer<vtkBitArray> VisibilityBitsArray(const Sees& sees, vtkIdType m, int k)
 {
   auto bits = vtkSmartPointer<vtkBitArray>::New();
   bits->SetName("VisibilityBits");
   bits->SetNumberOfComponents(k);
   bits->SetNumberOfTuples(m);
-  for (vtkIdType o = 0; o < m; ++o)
-  {
-    for (int j = 0; j < k; ++j)
+  const vtkIdType values = m * k;
+  unsigned char* bytes = bits->GetPointer(0);
+  vtkApertureSMP::For(0, (values + 7) / 8,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      double c = 0.0;
-      bits->SetValue(o * k + j, sees(o, j, c));
-    }
-  }
+      for (vtkIdType b = begin; b < end; ++b)
+      {
+        unsigned char byte = 0;
+        for (vtkIdType v = 8 * b; v < std::min(8 * b + 8, values); ++v)
+        {
+          double c = 0.0;
+          byte |= sees(v / k, static_cast<int>(v % k), c) ? 0x80 >> (v % 8) : 0;
+        }
+        bytes[b] = byte;
+      }
+    });
+  bits->DataChanged();
   return bits;
 }
 

@@ -20,9 +20,12 @@
 //    every point moved, against a cold run on the same step (rays of a twentieth of its size);
 //  - a 1M-point height field with 64 rays per point.
 //
-// Usage: BenchmarkAperturePrecompute <Testing/Data folder> [--quick | --large TRIANGLES]
+// Usage: BenchmarkAperturePrecompute <Testing/Data folder>
+//          [--quick | --large TRIANGLES | --visibility POINTS]
 // --quick runs a few points only (a smoke test that the benchmark still works); --large
-// measures memory and throughput on the bunny split and copied to at least TRIANGLES instead.
+// measures memory and throughput on the bunny split and copied to at least TRIANGLES instead;
+// --visibility the time and memory of vtkLightSphereVisibility's bit-packed matrix at k = 1026
+// on such a surface of at least POINTS points.
 
 #include "vtkApertureBenchmarkMemory.h"
 #include "vtkApertureMeshSurface.h"
@@ -35,8 +38,11 @@
 #include "vtkTerrainRGBReader.h"
 
 #include "vtkAppendPolyData.h"
+#include "vtkBitArray.h"
 #include "vtkImageData.h"
 #include "vtkImageResize.h"
+#include "vtkLightSphere.h"
+#include "vtkLightSphereVisibility.h"
 #include "vtkLinearSubdivisionFilter.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -436,13 +442,62 @@ void LargeMesh(vtkPolyData* bunny, vtkIdType triangles)
       bare / filter);
   }
 }
+
+// Issue 25's visibility matrix for a million vertices: vtkLightSphereVisibility at k = 1026 with
+// only the bit-packed `VisibilityBits` (the float matrix would take 4 bytes an entry), its time
+// and its peak memory against the input and that array. False when the filter failed.
+bool LargeVisibility(vtkPolyData* bunny, vtkIdType points)
+{
+  const vtkSmartPointer<vtkPolyData> mesh = LargeSurface(bunny, 2 * points);
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  const int k = vtkLightSphere::GetNumberOfDirections(4);
+  vtkNew<vtkLightSphereVisibility> filter;
+  filter->SetInputData(mesh);
+  filter->SetLevel(4);
+  filter->ComputeVisibilityOff();
+  filter->ComputeVisibilityBitsOn();
+#ifdef __GLIBC__
+  malloc_trim(0);
+#endif
+  const long before = StatusKiB("VmRSS:");
+  const bool reset = ResetPeak();
+  const double seconds = Seconds([&]() { filter->Update(); }, 1);
+  const long peak = reset && before > 0 ? StatusKiB("VmHWM:") - before : -1;
+  auto* bits = vtkBitArray::SafeDownCast(
+    filter->GetOutput()->GetPointData()->GetAbstractArray("VisibilityBits"));
+  if (!bits)
+  {
+    std::cerr << "vtkLightSphereVisibility gave no VisibilityBits\n";
+    return false;
+  }
+  vtkIdType visible = 0;
+  for (vtkIdType v = 0; v < bits->GetNumberOfValues(); ++v)
+  {
+    visible += bits->GetValue(v);
+  }
+  // vtkBitArray reports no memory size of its own: one bit a value.
+  const double inputKiB = mesh->GetActualMemorySize();
+  const double bitsKiB = (bits->GetNumberOfValues() + 7) / 8 / 1024.0;
+  std::printf("## vtkLightSphereVisibility on a large surface\n\n%lld points, %lld triangles, k = "
+              "%d, bits only, %d thread(s)\n\n| measure | value |\n|---|---|\n",
+    static_cast<long long>(n), static_cast<long long>(mesh->GetNumberOfPolys()), k,
+    vtkSMPTools::GetEstimatedNumberOfThreads());
+  std::printf("| time | %.1f s (%.1f M point-directions/s) |\n", seconds, 1e-6 * n * k / seconds);
+  std::printf("| VisibilityBits | %.0f MiB (%.0f bytes a point; the float matrix: %.0f MiB) |\n",
+    bitsKiB / 1024, 1024.0 * bitsKiB / n, 4.0 * n * k / (1 << 20));
+  std::printf("| peak / (input %.0f MiB + VisibilityBits) | %.2f (%.0f MiB) |\n", inputKiB / 1024,
+    peak / (inputKiB + bitsKiB), peak / 1024.0);
+  std::printf("| directions visible, mean | %.3f |\n", double(visible) / (double(n) * k));
+  return true;
+}
 }
 
 int main(int argc, char* argv[])
 {
   if (argc < 2)
   {
-    std::cerr << "Usage: " << argv[0] << " <Testing/Data folder> [--quick | --large TRIANGLES]\n";
+    std::cerr << "Usage: " << argv[0]
+              << " <Testing/Data folder> [--quick | --large TRIANGLES | --visibility POINTS]\n";
     return 2;
   }
   const std::string data = argv[1];
@@ -465,6 +520,10 @@ int main(int argc, char* argv[])
   {
     LargeMesh(bunny, std::stoll(argv[3]));
     return 0;
+  }
+  if (argc > 3 && std::string(argv[2]) == "--visibility")
+  {
+    return LargeVisibility(bunny, std::stoll(argv[3])) ? 0 : 1;
   }
   const int rays = quick ? 16 : 256;
   const vtkIdType points = bunny->GetNumberOfPoints();
