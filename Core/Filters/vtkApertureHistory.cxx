@@ -22,7 +22,7 @@
 
 namespace
 {
-// A moved triangle's box spanning more grid cells than this marks every point instead.
+// A moved box spanning more grid cells than this marks every point instead.
 constexpr double MaximumCellsPerBox = 32768.0;
 
 // A retraced point whose rays' reach spans more cells of moved boxes than this casts every ray.
@@ -46,8 +46,8 @@ std::vector<double> WorldVertices(const vtkApertureSurface& surface)
   return world;
 }
 
-// The cells of a grid, marked where the boxes of triangles grown by `reach` overlap them. The
-// cells are half as wide as the reach, so that few points beyond it are marked.
+// The cells of a grid, marked where boxes grown by `reach` overlap them. The cells are half as
+// wide as the reach, so that few points beyond it are marked.
 class CellSet
 {
 public:
@@ -57,23 +57,23 @@ public:
   {
   }
 
-  // Marks the cells of the box of a triangle's corners grown by the reach; false when it spans
+  // Marks the cells of the box from `lower` to `upper` grown by the reach; false when it spans
   // too many cells (or is not finite) to mark.
-  bool AddTriangle(const double* corners[3])
+  bool AddBox(const double lower[3], const double upper[3])
   {
     std::int64_t lo[3], hi[3];
     double cells = 1.0;
     for (int c = 0; c < 3; ++c)
     {
-      const double a = std::min({ corners[0][c], corners[1][c], corners[2][c] }) - this->Reach;
-      const double b = std::max({ corners[0][c], corners[1][c], corners[2][c] }) + this->Reach;
-      cells *= std::floor(b / this->Size) - std::floor(a / this->Size) + 1.0;
+      const double a = std::floor((lower[c] - this->Reach) / this->Size);
+      const double b = std::floor((upper[c] + this->Reach) / this->Size);
+      cells *= b - a + 1.0;
       if (!(cells <= MaximumCellsPerBox))
       {
         return false;
       }
-      lo[c] = static_cast<std::int64_t>(std::floor(a / this->Size));
-      hi[c] = static_cast<std::int64_t>(std::floor(b / this->Size));
+      lo[c] = static_cast<std::int64_t>(a);
+      hi[c] = static_cast<std::int64_t>(b);
     }
     for (std::int64_t i = lo[0]; i <= hi[0]; ++i)
     {
@@ -83,6 +83,26 @@ public:
         {
           this->Cells.insert(CellKey(i, j, k));
         }
+      }
+    }
+    return true;
+  }
+
+  // AddBox() for boxes of 6 values each (lower x, y, z, upper x, y, z) in the local coordinates
+  // of `origin`.
+  bool AddBoxes(const std::vector<float>& boxes, const double origin[3])
+  {
+    for (size_t b = 0; b < boxes.size(); b += 6)
+    {
+      double lower[3], upper[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        lower[k] = boxes[b + k] + origin[k];
+        upper[k] = boxes[b + k + 3] + origin[k];
+      }
+      if (!this->AddBox(lower, upper))
+      {
+        return false;
       }
     }
     return true;
@@ -241,7 +261,6 @@ std::vector<unsigned char> vtkApertureHistory::Needed(
     return all; // most of it moved: sorting out the rest would cost more than it saves
   }
   const std::vector<double> now = WorldVertices(surface);
-  CellSet cells(reach);
   for (size_t t = 0; t < surface.Triangles.size(); t += 3)
   {
     const std::uint32_t* v = &surface.Triangles[t];
@@ -254,12 +273,16 @@ std::vector<unsigned char> vtkApertureHistory::Needed(
     {
       const double* corners[3] = { &(*at)[3 * size_t(v[0])], &(*at)[3 * size_t(v[1])],
         &(*at)[3 * size_t(v[2])] };
-      if (!cells.AddTriangle(corners))
-      {
-        return all;
-      }
       this->AddMovedBox(corners, surface.Origin);
     }
+  }
+  // The points within reach of a moved triangle: those near the merged boxes, which hold them
+  // (a few more points than the triangles' own boxes would mark, in far fewer cells).
+  CellSet cells(reach);
+  if (!(this->BoxSpan < std::numeric_limits<float>::infinity()) ||
+    !cells.AddBoxes(this->MovedBoxes, surface.Origin))
+  {
+    return all; // a moved triangle not finite, or too large to mark
   }
   std::vector<unsigned char> needed(n, REUSE);
   const std::vector<vtkIdType> match = this->MatchSides(surface);
