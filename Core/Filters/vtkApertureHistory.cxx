@@ -15,6 +15,7 @@
 #include "vtkFloatArray.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -127,6 +128,89 @@ private:
   double Size;
   double Reach;
   std::unordered_set<std::uint64_t> Cells;
+};
+
+// A dense grid of marked cells of `size` over a box (at most 129 cells a side when the size is
+// at least 1/128 of the box's largest side).
+class Grid
+{
+public:
+  Grid(const float lower[3], const float upper[3], double size)
+    : Size(size)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Lower[k] = lower[k];
+      this->Dims[k] = static_cast<int>(std::floor((double(upper[k]) - lower[k]) / size)) + 1;
+    }
+    this->Marked.assign(size_t(this->Dims[0]) * this->Dims[1] * this->Dims[2], 0);
+  }
+
+  // Marks the cell of `x` and its 26 neighbours.
+  void MarkAround(const float x[3])
+  {
+    int c[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      c[k] = this->Cell(x[k], k);
+    }
+    for (int i = std::max(c[0] - 1, 0); i <= std::min(c[0] + 1, this->Dims[0] - 1); ++i)
+    {
+      for (int j = std::max(c[1] - 1, 0); j <= std::min(c[1] + 1, this->Dims[1] - 1); ++j)
+      {
+        for (int k = std::max(c[2] - 1, 0); k <= std::min(c[2] + 1, this->Dims[2] - 1); ++k)
+        {
+          this->Marked[this->Index(i, j, k)] = 1;
+        }
+      }
+    }
+  }
+
+  // Whether the box of a triangle's corners overlaps a marked cell (true when it spans more
+  // cells than are worth looking at).
+  bool Overlaps(const float* a, const float* b, const float* c) const
+  {
+    int lo[3], hi[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = this->Cell(std::min({ a[k], b[k], c[k] }), k);
+      hi[k] = this->Cell(std::max({ a[k], b[k], c[k] }), k);
+    }
+    if ((hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1) > 64)
+    {
+      return true;
+    }
+    for (int i = lo[0]; i <= hi[0]; ++i)
+    {
+      for (int j = lo[1]; j <= hi[1]; ++j)
+      {
+        for (int k = lo[2]; k <= hi[2]; ++k)
+        {
+          if (this->Marked[this->Index(i, j, k)])
+          {
+            return true;
+          }
+        }
+      }
+    }
+    return false;
+  }
+
+private:
+  int Cell(float x, int k) const
+  {
+    const double c = std::floor((double(x) - this->Lower[k]) / this->Size);
+    return static_cast<int>(std::min(std::max(c, 0.0), double(this->Dims[k] - 1)));
+  }
+  size_t Index(int i, int j, int k) const
+  {
+    return (size_t(k) * this->Dims[1] + j) * this->Dims[0] + i;
+  }
+
+  double Size;
+  double Lower[3];
+  int Dims[3];
+  std::vector<unsigned char> Marked;
 };
 }
 
@@ -304,6 +388,49 @@ std::vector<unsigned char> vtkApertureHistory::Needed(
   }
   this->Plans = needed;
   return needed;
+}
+
+//------------------------------------------------------------------------------
+// A grid over the surface of cells at least as wide as the reach (at most 129 a side), marked
+// around each casting point: every place within reach of one lies in a marked cell, so a
+// triangle whose box overlaps no marked cell is out of every cast ray's reach.
+std::vector<unsigned char> vtkApertureHistory::Reachable(const vtkApertureSurface& surface) const
+{
+  if (this->Plans.empty() || surface.GetNumberOfVertices() == 0)
+  {
+    return {};
+  }
+  const float* vertices = surface.Vertices.data();
+  float lower[3] = { FLT_MAX, FLT_MAX, FLT_MAX }, upper[3] = { -FLT_MAX, -FLT_MAX, -FLT_MAX };
+  for (vtkIdType v = 0; v < surface.GetNumberOfVertices(); ++v)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      lower[k] = std::min(lower[k], vertices[3 * v + k]);
+      upper[k] = std::max(upper[k], vertices[3 * v + k]);
+    }
+  }
+  double size = this->Reach;
+  for (int k = 0; k < 3; ++k)
+  {
+    size = std::max(size, (double(upper[k]) - lower[k]) / 128.0);
+  }
+  Grid grid(lower, upper, size);
+  for (vtkIdType p = 0; p < static_cast<vtkIdType>(this->Plans.size()); ++p)
+  {
+    if (this->Plans[p] != REUSE)
+    {
+      grid.MarkAround(&vertices[3 * size_t(surface.PointVertex[p])]);
+    }
+  }
+  std::vector<unsigned char> reachable(surface.GetNumberOfTriangles());
+  for (size_t t = 0; t < reachable.size(); ++t)
+  {
+    const std::uint32_t* v = &surface.Triangles[3 * t];
+    reachable[t] = grid.Overlaps(
+      &vertices[3 * size_t(v[0])], &vertices[3 * size_t(v[1])], &vertices[3 * size_t(v[2])]);
+  }
+  return reachable;
 }
 
 //------------------------------------------------------------------------------

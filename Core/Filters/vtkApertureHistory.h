@@ -91,6 +91,13 @@ public:
   std::vector<unsigned char> Needed(
     const vtkApertureSurface& surface, const std::vector<double>& world, double reach);
 
+  /**
+   * Per triangle of `surface`, whether a ray of a point that Needed() did not plan to REUSE can
+   * hit it (the triangle comes near such a point: within the reach, and a little more); empty
+   * when Needed() planned every point to CAST.
+   */
+  std::vector<unsigned char> Reachable(const vtkApertureSurface& surface) const;
+
   /// Copies the remembered caps (and rays) of the points that Needed() planned to REUSE.
   void Reuse(Caps& caps) const;
 

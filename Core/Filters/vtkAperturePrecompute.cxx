@@ -798,6 +798,12 @@ bool vtkAperturePrecompute::vtkRun::BuildScene()
   {
     occluders.push_back(&s);
   }
+  if (this->Reusable)
+  {
+    // Only the triangles the points that cast again can reach: a smaller BVH and hit filter.
+    const vtkApertureSurface& surface = this->Receivers[0]->Surface;
+    this->Scene->KeepOnly(surface, this->Self->History->Reachable(surface));
+  }
   if (!this->Scene->Build(
         receivers, occluders, this->Self->AccelerationStructure, this->Self->EmbreeConfiguration))
   {

@@ -175,28 +175,29 @@ std::uint64_t vtkApertureRayRisks::Key(std::int64_t i, std::int64_t j, std::int6
 
 //------------------------------------------------------------------------------
 std::vector<unsigned char> vtkApertureRayRisks::Find(
-  const vtkApertureSurface& surface, bool receiver) const
+  const vtkApertureSurface& surface, bool receiver, const std::vector<unsigned char>& only) const
 {
   const vtkIdType triangles = surface.GetNumberOfTriangles();
   std::vector<unsigned char> risky(triangles, 0);
   if (receiver)
   {
-    this->MarkIncident(surface, risky);
+    this->MarkIncident(surface, only, risky);
   }
   vtkApertureSMP::For(0, triangles, 1024,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType t = begin; t < end; ++t)
       {
-        risky[t] = risky[t] || this->NearStart(surface, static_cast<std::uint32_t>(t));
+        risky[t] = risky[t] ||
+          ((only.empty() || only[t]) && this->NearStart(surface, static_cast<std::uint32_t>(t)));
       }
     });
   return risky;
 }
 
 //------------------------------------------------------------------------------
-void vtkApertureRayRisks::MarkIncident(
-  const vtkApertureSurface& surface, std::vector<unsigned char>& risky) const
+void vtkApertureRayRisks::MarkIncident(const vtkApertureSurface& surface,
+  const std::vector<unsigned char>& only, std::vector<unsigned char>& risky) const
 {
   // The receiving points of each vertex.
   const vtkIdType vertices = surface.GetNumberOfVertices();
@@ -213,6 +214,10 @@ void vtkApertureRayRisks::MarkIncident(
   }
   for (size_t t = 0; t < risky.size(); ++t)
   {
+    if (!only.empty() && !only[t])
+    {
+      continue;
+    }
     const std::uint32_t* v = &surface.Triangles[3 * t];
     double e1[3], e2[3];
     Subtract(&surface.Vertices[3 * size_t(v[1])], &surface.Vertices[3 * size_t(v[0])], e1);

@@ -47,9 +47,11 @@ public:
 
   /**
    * One flag per triangle of `surface`: 1 where the hit filter is needed. `receiver`: the
-   * surface is one of the receivers (its own points' rules apply).
+   * surface is one of the receivers (its own points' rules apply). Only the triangles flagged in
+   * `only` are looked at (the others get 0), all of them when it is empty.
    */
-  std::vector<unsigned char> Find(const vtkApertureSurface& surface, bool receiver) const;
+  std::vector<unsigned char> Find(const vtkApertureSurface& surface, bool receiver,
+    const std::vector<unsigned char>& only = std::vector<unsigned char>()) const;
 
 private:
   struct Start
@@ -63,7 +65,8 @@ private:
   // The cell of a coordinate along an axis, and the key of a cell.
   std::int64_t Index(float x, int axis) const;
   static std::uint64_t Key(std::int64_t i, std::int64_t j, std::int64_t k);
-  void MarkIncident(const vtkApertureSurface& surface, std::vector<unsigned char>& risky) const;
+  void MarkIncident(const vtkApertureSurface& surface, const std::vector<unsigned char>& only,
+    std::vector<unsigned char>& risky) const;
   bool NearStart(const vtkApertureSurface& surface, std::uint32_t triangle) const;
 
   std::vector<Start> Starts;

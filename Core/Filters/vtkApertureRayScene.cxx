@@ -169,15 +169,26 @@ bool vtkApertureRayScene::Build(const std::vector<const vtkApertureSurface*>& re
   rtcSetSceneBuildQuality(this->Scene, RTC_BUILD_QUALITY_MEDIUM);
   const vtkApertureRayRisks risks(receivers);
   bool built = true;
+  const std::vector<unsigned char> all;
   for (size_t k = 0; k < surfaces.size() && built; ++k)
   {
-    built = this->AddSurface(*surfaces[k], risks.Find(*surfaces[k], k < receivers.size()));
+    const std::vector<unsigned char>& keep = surfaces[k] == this->KeptSurface ? this->Kept : all;
+    built =
+      this->AddSurface(*surfaces[k], risks.Find(*surfaces[k], k < receivers.size(), keep), keep);
   }
   if (built)
   {
     rtcCommitScene(this->Scene);
   }
   return built && !this->Failed();
+}
+
+//------------------------------------------------------------------------------
+void vtkApertureRayScene::KeepOnly(
+  const vtkApertureSurface& surface, std::vector<unsigned char> triangles)
+{
+  this->KeptSurface = &surface;
+  this->Kept = std::move(triangles);
 }
 
 //------------------------------------------------------------------------------
@@ -197,13 +208,17 @@ bool vtkApertureRayScene::Build(const vtkApertureSurface& receivers,
 // over the surface's own index buffer, so that the largest array of a large surface is not
 // copied. Where the runs are many (an Embree geometry costs hundreds of bytes), they are copied
 // into one geometry instead.
-bool vtkApertureRayScene::AddSurface(
-  const vtkApertureSurface& surface, const std::vector<unsigned char>& risky)
+bool vtkApertureRayScene::AddSurface(const vtkApertureSurface& surface,
+  const std::vector<unsigned char>& risky, const std::vector<unsigned char>& keep)
 {
   std::unique_ptr<Filtered> filtered(new Filtered{ &surface, {}, {} });
   std::vector<std::pair<size_t, size_t>> runs; // first plain triangle, end
   for (size_t t = 0; t < risky.size(); ++t)
   {
+    if (!keep.empty() && !keep[t])
+    {
+      continue; // a gap between runs
+    }
     if (risky[t])
     {
       auto& to = filtered->Indices;

@@ -96,6 +96,13 @@ public:
     const std::string& configuration = std::string());
 
   /**
+   * Before Build(): only the triangles of `surface` flagged in `triangles` enter the scene (an
+   * update that traces the rays of a few points leaves out what they cannot reach; a left-out
+   * triangle changes no answer of a ray that could not have hit it).
+   */
+  void KeepOnly(const vtkApertureSurface& surface, std::vector<unsigned char> triangles);
+
+  /**
    * Build() for one receiver and its occluders.
    */
   bool Build(const vtkApertureSurface& receivers, const std::vector<vtkApertureSurface>& occluders,
@@ -199,8 +206,10 @@ private:
   static void ReportError(void* self, RTCError code, const char* message);
   static void Filter(const RTCFilterFunctionNArguments* args);
   bool Failed();
-  // Adds a surface as a geometry without filter and one with it (`risky`: per triangle).
-  bool AddSurface(const vtkApertureSurface& surface, const std::vector<unsigned char>& risky);
+  // Adds a surface's triangles (those in `keep`, or all where it is empty) as a geometry without
+  // filter and one with it (`risky`: per triangle).
+  bool AddSurface(const vtkApertureSurface& surface, const std::vector<unsigned char>& risky,
+    const std::vector<unsigned char>& keep);
   // A triangle geometry over `triangles` index triples the surface or the scene owns.
   bool AddGeometry(const vtkApertureSurface& surface, const std::uint32_t* indices,
     size_t triangles, Filtered* filtered);
@@ -213,6 +222,8 @@ private:
   // runs are many, and the filtered ones.
   std::vector<std::vector<std::uint32_t>> Plain;
   std::vector<std::unique_ptr<Filtered>> Risky;
+  const vtkApertureSurface* KeptSurface = nullptr;
+  std::vector<unsigned char> Kept; // KeepOnly()'s triangles
   vtkIdType FilteredTriangles = 0;
   vtkIdType MaximumSharedRuns = 1024;
   vtkIdType SharedRuns = 0;

@@ -72,11 +72,18 @@ struct Traced
   vtkIdType Shared = 0;
 };
 
-// Every valid point's rays, unbounded, in a scene that shares up to `maximumSharedRuns` runs.
-bool Trace(const vtkApertureSurface& surface, vtkIdType maximumSharedRuns, Traced& traced)
+// The rays of every valid point whose x lies in [xmin, xmax], of length `tfar`, in a scene that
+// shares up to `maximumSharedRuns` runs and holds the triangles in `keep` (all if empty).
+bool Trace(const vtkApertureSurface& surface, vtkIdType maximumSharedRuns, Traced& traced,
+  const std::vector<unsigned char>& keep = {}, float tfar = std::numeric_limits<float>::infinity(),
+  double xmin = -1e300, double xmax = 1e300)
 {
   vtkApertureRayScene scene;
   scene.SetMaximumSharedRuns(maximumSharedRuns);
+  if (!keep.empty())
+  {
+    scene.KeepOnly(surface, keep);
+  }
   if (!scene.Build(surface, {}))
   {
     std::cerr << "FAIL Embree: " << scene.GetError() << "\n";
@@ -86,11 +93,11 @@ bool Trace(const vtkApertureSurface& surface, vtkIdType maximumSharedRuns, Trace
   traced.Shared = scene.GetNumberOfSharedRuns();
   const vtkApertureRaySampler sampler(Rays, 1, false);
   vtkApertureRayPacket packet(scene, surface);
-  const float tfar = std::numeric_limits<float>::infinity();
   vtkApertureRaySampler::Point point;
   for (vtkIdType id = 0; id < surface.GetNumberOfPoints(); ++id)
   {
-    if (!surface.Valid[id])
+    const double x = surface.Vertices[3 * size_t(surface.PointVertex[id])] + surface.Origin[0];
+    if (!surface.Valid[id] || x < xmin || x > xmax)
     {
       continue;
     }
@@ -154,6 +161,52 @@ bool Compare(const char* name, vtkPolyData* grid, bool shares)
   check(shared.Filtered > 0, "no triangle got the hit filter");
   return ok;
 }
+
+// A scene of only the triangles within reach of some points answers those points' rays of that
+// reach as the whole scene does, and lets through rays that only left-out triangles blocked.
+bool KeepOnlyReachable(vtkPolyData* grid)
+{
+  vtkApertureSceneSurfaces::Settings settings;
+  vtkApertureSurface surface;
+  std::vector<vtkApertureSurface> none;
+  std::string error;
+  if (!vtkApertureSceneSurfaces::Build(grid, nullptr, {}, settings, surface, none, error))
+  {
+    std::cerr << "FAIL keep only: " << error << "\n";
+    return false;
+  }
+  // The points with x <= 20 and rays of 5 spacings (the offsets are far below a spacing): every
+  // triangle they can hit has a corner with x < 26.
+  const float reach = 5.0f;
+  std::vector<unsigned char> keep(surface.GetNumberOfTriangles());
+  for (size_t t = 0; t < keep.size(); ++t)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const size_t v = surface.Triangles[3 * t + c];
+      keep[t] = keep[t] || surface.Vertices[3 * v] + surface.Origin[0] < 26.0;
+    }
+  }
+  Traced all, kept, allFar, keptFar;
+  if (!Trace(surface, 1024, all, {}, reach, -1.0, 20.0) ||
+    !Trace(surface, 1024, kept, keep, reach, -1.0, 20.0) ||
+    !Trace(surface, 1024, allFar, {}, std::numeric_limits<float>::infinity(), 40.0) ||
+    !Trace(surface, 1024, keptFar, keep, std::numeric_limits<float>::infinity(), 40.0))
+  {
+    return false;
+  }
+  auto blocked = [](const Traced& t) { return std::count(t.Visible.begin(), t.Visible.end(), 0); };
+  std::cout << "keep only: " << std::count(keep.begin(), keep.end(), 1) << " of " << keep.size()
+            << " triangles; near rays blocked " << blocked(all) << " / " << blocked(kept)
+            << ", far rays blocked " << blocked(allFar) << " / " << blocked(keptFar) << "\n";
+  bool ok = all.Visible == kept.Visible && blocked(all) > 0;
+  ok = ok && blocked(keptFar) < blocked(allFar) && kept.Filtered < all.Filtered;
+  if (!ok)
+  {
+    std::cerr << "FAIL keep only: the rays within reach differ, or nothing was left out\n";
+  }
+  return ok;
+}
 }
 
 int TestApertureRayScene(int, char*[])
@@ -162,5 +215,6 @@ int TestApertureRayScene(int, char*[])
   bool ok = Compare("rough", Grid(80, 3.0), false);
   // Heights of 1 spacing: a gentler surface, whose few filtered triangles leave long runs.
   ok = Compare("smooth", Grid(80, 1.0), true) && ok;
+  ok = KeepOnlyReachable(Grid(80, 3.0)) && ok;
   return ok ? 0 : 1;
 }
