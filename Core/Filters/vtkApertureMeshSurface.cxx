@@ -29,10 +29,12 @@
 
 namespace
 {
-// Union-find over small index sets (the triangles around one vertex).
+// Union-find over small index sets (the triangles around one vertex), and the keys that group
+// them (kept between vertices, so that they are allocated once).
 struct Classes
 {
   std::vector<int> Parent;
+  std::vector<std::pair<vtkIdType, int>> Keyed;
   void Reset(size_t n)
   {
     this->Parent.resize(n);
@@ -58,6 +60,9 @@ struct Sides
   std::vector<double> Areas;
   double VertexNormal[3] = { 0.0, 0.0, 0.0 };
   double Total = 0.0;
+  // Scratch kept between vertices: the side of each class, the sides in order.
+  std::vector<int> OfRoot;
+  std::vector<size_t> Order;
 };
 }
 
@@ -123,7 +128,7 @@ struct Build
   void GroupCreaseFaces(
     const std::uint32_t* corners, int m, double cosAngle, Classes& classes) const;
   void SumSides(int m, Classes& classes, Sides& sides) const;
-  void MakeSidePoints(vtkIdType v, const Sides& sides, std::vector<vtkIdType>& pointOfSide);
+  void MakeSidePoints(vtkIdType v, Sides& sides, std::vector<vtkIdType>& pointOfSide);
   void SidesFromNormals(vtkDataArray* normals, double cosAngle);
   vtkIdType AddPoint(vtkIdType vertex, unsigned int side, const double normal[3]);
   void MapInputPoints();
@@ -542,7 +547,8 @@ void Build::GroupCreaseFaces(
 {
   classes.Reset(m);
   auto triangle = [&](int i) { return this->Geometry[corners[i] / 3]; };
-  std::vector<std::pair<vtkIdType, int>> keyed;
+  std::vector<std::pair<vtkIdType, int>>& keyed = classes.Keyed;
+  keyed.clear();
   for (int i = 0; i < m; ++i)
   {
     // Polygons are one face each; a strip's triangles are faces of their own.
@@ -590,7 +596,8 @@ void Build::SumSides(int m, Classes& classes, Sides& sides) const
   sides.Areas.clear();
   std::fill(sides.VertexNormal, sides.VertexNormal + 3, 0.0);
   sides.Total = 0.0;
-  std::vector<int> sideOfRoot(m, -1);
+  std::vector<int>& sideOfRoot = sides.OfRoot;
+  sideOfRoot.assign(m, -1);
   for (int i = 0; i < m; ++i)
   {
     const int root = classes.Find(i);
@@ -617,7 +624,7 @@ void Build::SumSides(int m, Classes& classes, Sides& sides) const
 // One receiving point per side of a vertex, but a side without a direction, or a fold (a small
 // side facing against a clearly oriented vertex: a scan's folded triangle, not a crease), joins
 // the vertex's largest side.
-void Build::MakeSidePoints(vtkIdType v, const Sides& sides, std::vector<vtkIdType>& pointOfSide)
+void Build::MakeSidePoints(vtkIdType v, Sides& sides, std::vector<vtkIdType>& pointOfSide)
 {
   const std::vector<std::array<double, 3>>& sums = sides.Sums;
   const std::vector<double>& areas = sides.Areas;
@@ -633,7 +640,8 @@ void Build::MakeSidePoints(vtkIdType v, const Sides& sides, std::vector<vtkIdTyp
   };
   // The sides in the order of their directions, whatever the order of the triangles, so that
   // the same surface in another cell order (strips, triangles) casts the same rays.
-  std::vector<size_t> order(sums.size());
+  std::vector<size_t>& order = sides.Order;
+  order.resize(sums.size());
   std::iota(order.begin(), order.end(), 0);
   auto direction = [&sums](size_t s)
   {
