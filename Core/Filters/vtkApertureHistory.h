@@ -27,6 +27,8 @@
  *   the same way (same local coordinates, normal, offsets and key), keeps the answer of every
  *   ray that passes through none of the boxes around the moved triangles (GetMovedBoxes()), so
  *   that it casts only the others again (GetRays() holds the last answers).
+ * - **Triangles out of reach**: Reachable() says which triangles the rays of the points that cast
+ *   again can hit, so that the update's scene holds only those.
  */
 
 #ifndef vtkApertureHistory_h
