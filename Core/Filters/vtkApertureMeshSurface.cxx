@@ -11,6 +11,7 @@
 #include "vtkApertureMeshSurface.h"
 
 #include "vtkApertureCellCheck.h"
+#include "vtkApertureSMP.h"
 #include "vtkApertureSurface.h"
 
 #include "vtkCellArray.h"
@@ -55,6 +56,9 @@ struct Classes
 // unit face normals and area, the vertex's area-weighted normal and total area.
 struct Sides
 {
+  // The unit (or zero) normal and the area of each triangle around the vertex: kept for every
+  // triangle, they would be the largest array of a large surface's intake.
+  std::vector<std::array<float, 4>> Faces;
   std::vector<int> Of;
   std::vector<std::array<double, 3>> Sums;
   std::vector<double> Areas;
@@ -64,6 +68,28 @@ struct Sides
   std::vector<int> OfRoot;
   std::vector<size_t> Order;
 };
+
+// The receiving points made for a run of vertices on one thread, numbered from 0 in the run
+// until StorePoints() appends them to the surface, in the order of their vertices.
+struct PointBlock
+{
+  std::vector<std::uint32_t> Vertex;
+  std::vector<std::uint64_t> Key;
+  std::vector<unsigned char> Valid;
+  std::vector<float> Normals; // 3 each
+  void Clear()                // keeping the room for the next wave
+  {
+    this->Vertex.clear();
+    this->Key.clear();
+    this->Valid.clear();
+    this->Normals.clear();
+  }
+};
+
+// Vertices a block of SidesFromCreases() (the bunny has 9), and blocks a wave: only one wave's
+// points are held twice.
+constexpr vtkIdType BlockVertices = 4096;
+constexpr vtkIdType WaveBlocks = 64;
 }
 
 //------------------------------------------------------------------------------
@@ -80,14 +106,11 @@ struct Build
   std::vector<vtkIdType> VertexInput;   // an input point of each vertex
   std::vector<unsigned char> OnSurface; // input point used by a polygon or strip
   // 32-bit where the size limits of Set() allow: the triangles dominate the memory.
-  std::vector<std::uint32_t> TriInput;  // every triangle's input points, 3 each
-  std::vector<std::uint32_t> TriCell;   // its polygon or strip
-  std::vector<std::uint32_t> TriCorner; // the connectivity index of each corner
-  std::vector<std::uint32_t> TriPoint;  // the receiving point of each corner (NoVertex: none)
-  std::vector<std::uint32_t> Geometry;  // triangles with three distinct vertices
-  // The unit (or zero) normal and the area of each triangle around the vertex at hand: kept
-  // for every triangle, they would be the largest array of a large surface's intake.
-  std::vector<std::array<float, 4>> Faces;
+  std::vector<std::uint32_t> TriInput;     // every triangle's input points, 3 each
+  std::vector<std::uint32_t> TriCell;      // its polygon or strip
+  std::vector<std::uint32_t> TriCorner;    // the connectivity index of each corner
+  std::vector<std::uint32_t> TriPoint;     // the receiving point of each corner (NoVertex: none)
+  std::vector<std::uint32_t> Geometry;     // triangles with three distinct vertices
   std::vector<vtkIdType> IncidentStart;    // per vertex, into Incident
   std::vector<std::uint32_t> Incident;     // 3 * geometry triangle + corner
   std::vector<vtkIdType> VertexFirstPoint; // each vertex's first receiving point (-1: none)
@@ -122,15 +145,19 @@ struct Build
   bool Consistent() const;
   std::vector<std::vector<std::pair<vtkIdType, bool>>> ManifoldNeighbours() const;
   void FlipPieces(const std::vector<std::vector<std::pair<vtkIdType, bool>>>& next);
-  void FacesAround(const std::uint32_t* corners, int m);
+  void FacesAround(const std::uint32_t* corners, int m, Sides& sides) const;
   void FindIncident();
   void SidesFromCreases(double cosAngle);
+  void CreaseSides(vtkIdType begin, vtkIdType end, double cosAngle, PointBlock& block);
   void GroupCreaseFaces(
-    const std::uint32_t* corners, int m, double cosAngle, Classes& classes) const;
+    const std::uint32_t* corners, int m, double cosAngle, Classes& classes, Sides& sides) const;
   void SumSides(int m, Classes& classes, Sides& sides) const;
-  void MakeSidePoints(vtkIdType v, Sides& sides, std::vector<vtkIdType>& pointOfSide);
+  void MakeSidePoints(
+    vtkIdType v, Sides& sides, std::vector<vtkIdType>& pointOfSide, PointBlock& block);
   void SidesFromNormals(vtkDataArray* normals, double cosAngle);
-  vtkIdType AddPoint(vtkIdType vertex, unsigned int side, const double normal[3]);
+  vtkIdType AddPoint(
+    PointBlock& block, vtkIdType vertex, unsigned int side, const double normal[3]);
+  std::vector<vtkIdType> StorePoints(std::vector<PointBlock>& blocks, vtkIdType count);
   void MapInputPoints();
   void PointOfEachInput();
   void CornerPoints();
@@ -157,7 +184,7 @@ void Build::Weld()
     }
   }
   const double* w = world.data();
-  std::sort(order.begin(), order.end(),
+  vtkApertureSMP::Sort(order.begin(), order.end(),
     [w](vtkIdType a, vtkIdType b)
     {
       const double* p = w + 3 * a;
@@ -436,9 +463,10 @@ void Build::FlipPieces(const std::vector<std::vector<std::pair<vtkIdType, bool>>
 }
 
 //------------------------------------------------------------------------------
-void Build::FacesAround(const std::uint32_t* corners, int m)
+void Build::FacesAround(const std::uint32_t* corners, int m, Sides& sides) const
 {
-  this->Faces.resize(m);
+  std::vector<std::array<float, 4>>& faces = sides.Faces;
+  faces.resize(m);
   for (int i = 0; i < m; ++i)
   {
     double p[3][3];
@@ -455,9 +483,9 @@ void Build::FacesAround(const std::uint32_t* corners, int m)
     const bool area = length > 0.0; // zero area: no direction
     for (int k = 0; k < 3; ++k)
     {
-      this->Faces[i][k] = area ? static_cast<float>(n[k]) : 0.0f;
+      faces[i][k] = area ? static_cast<float>(n[k]) : 0.0f;
     }
-    this->Faces[i][3] = area ? static_cast<float>(0.5 * length) : 0.0f;
+    faces[i][3] = area ? static_cast<float>(0.5 * length) : 0.0f;
   }
 }
 
@@ -489,20 +517,22 @@ void Build::FindIncident()
 }
 
 //------------------------------------------------------------------------------
-vtkIdType Build::AddPoint(vtkIdType vertex, unsigned int side, const double normal[3])
+// A receiving point of `block` (its id there) on a side of a vertex.
+vtkIdType Build::AddPoint(
+  PointBlock& block, vtkIdType vertex, unsigned int side, const double normal[3])
 {
-  const vtkIdType id = static_cast<vtkIdType>(this->S.PointVertex.size());
-  this->S.PointVertex.push_back(static_cast<std::uint32_t>(vertex));
+  const vtkIdType id = static_cast<vtkIdType>(block.Vertex.size());
+  block.Vertex.push_back(static_cast<std::uint32_t>(vertex));
   double p[3];
   this->Input->GetPoint(this->VertexInput[vertex], p);
-  this->S.Key.push_back(vtkApertureSurface::PointKey(p, side));
+  block.Key.push_back(vtkApertureSurface::PointKey(p, side));
   double n[3] = { normal[0], normal[1], normal[2] };
   const double length = vtkMath::Normalize(n);
   const bool valid = length > 0.0 && std::isfinite(length);
-  this->S.Valid.push_back(valid ? 1 : 0);
+  block.Valid.push_back(valid ? 1 : 0);
   for (int k = 0; k < 3; ++k)
   {
-    this->S.Normals->InsertNextValue(valid ? static_cast<float>(n[k]) : 0.0f);
+    block.Normals.push_back(valid ? static_cast<float>(n[k]) : 0.0f);
   }
   if (this->VertexFirstPoint[vertex] < 0)
   {
@@ -514,12 +544,52 @@ vtkIdType Build::AddPoint(vtkIdType vertex, unsigned int side, const double norm
 //------------------------------------------------------------------------------
 // Computed normals: around each vertex, triangles of one cell, or across an edge whose faces
 // are within the feature angle, are one side; each side's normal sums its unit face normals.
+// Waves of blocks of vertices on every core, their points then numbered in vertex order as one
+// core would: the same surface whatever the number of threads.
 void Build::SidesFromCreases(double cosAngle)
+{
+  const vtkIdType vertices = static_cast<vtkIdType>(this->IncidentStart.size()) - 1;
+  std::vector<PointBlock> blocks(WaveBlocks);
+  for (vtkIdType wave = 0; wave < vertices; wave += WaveBlocks * BlockVertices)
+  {
+    const vtkIdType end = std::min(vertices, wave + WaveBlocks * BlockVertices);
+    auto block = [&](vtkIdType b) { return std::min(end, wave + b * BlockVertices); };
+    const vtkIdType count = (end - wave + BlockVertices - 1) / BlockVertices;
+    vtkApertureSMP::For(0, count, 1,
+      [&](vtkIdType begin, vtkIdType last)
+      {
+        for (vtkIdType b = begin; b < last; ++b)
+        {
+          this->CreaseSides(block(b), block(b + 1), cosAngle, blocks[b]);
+        }
+      });
+    const std::vector<vtkIdType> first = this->StorePoints(blocks, count);
+    vtkApertureSMP::For(0, count, 1,
+      [&](vtkIdType begin, vtkIdType last)
+      {
+        // The corners' and vertices' points, numbered in their block, get their surface ids.
+        for (vtkIdType v = block(begin); v < block(last); ++v)
+        {
+          const vtkIdType shift = first[(v - wave) / BlockVertices];
+          for (vtkIdType c = this->IncidentStart[v]; c < this->IncidentStart[v + 1]; ++c)
+          {
+            const std::uint32_t corner = this->Incident[c];
+            this->TriPoint[3 * this->Geometry[corner / 3] + corner % 3] += shift;
+          }
+          this->VertexFirstPoint[v] += this->VertexFirstPoint[v] >= 0 ? shift : 0;
+        }
+      });
+  }
+}
+
+//------------------------------------------------------------------------------
+// The sides of vertices begin .. end - 1, their points in `block`.
+void Build::CreaseSides(vtkIdType begin, vtkIdType end, double cosAngle, PointBlock& block)
 {
   Classes classes;
   Sides sides;
   std::vector<vtkIdType> pointOfSide;
-  for (vtkIdType v = 0; v + 1 < static_cast<vtkIdType>(this->IncidentStart.size()); ++v)
+  for (vtkIdType v = begin; v < end; ++v)
   {
     const std::uint32_t* corners = this->Incident.data() + this->IncidentStart[v];
     const int m = static_cast<int>(this->IncidentStart[v + 1] - this->IncidentStart[v]);
@@ -527,10 +597,10 @@ void Build::SidesFromCreases(double cosAngle)
     {
       continue; // in no triangle: its points are on no surface, or only in degenerate cells
     }
-    this->FacesAround(corners, m);
-    this->GroupCreaseFaces(corners, m, cosAngle, classes);
+    this->FacesAround(corners, m, sides);
+    this->GroupCreaseFaces(corners, m, cosAngle, classes, sides);
     this->SumSides(m, classes, sides);
-    this->MakeSidePoints(v, sides, pointOfSide);
+    this->MakeSidePoints(v, sides, pointOfSide, block);
     for (int i = 0; i < m; ++i)
     {
       this->TriPoint[3 * this->Geometry[corners[i] / 3] + corners[i] % 3] =
@@ -540,10 +610,32 @@ void Build::SidesFromCreases(double cosAngle)
 }
 
 //------------------------------------------------------------------------------
+// The points of the first `count` blocks appended to the surface's, one block after the other
+// (each block emptied). The surface id of each block's first point.
+std::vector<vtkIdType> Build::StorePoints(std::vector<PointBlock>& blocks, vtkIdType count)
+{
+  vtkApertureSurface& s = this->S;
+  std::vector<vtkIdType> first(count);
+  for (vtkIdType b = 0; b < count; ++b)
+  {
+    PointBlock& block = blocks[b];
+    first[b] = s.GetNumberOfPoints();
+    s.PointVertex.insert(s.PointVertex.end(), block.Vertex.begin(), block.Vertex.end());
+    s.Key.insert(s.Key.end(), block.Key.begin(), block.Key.end());
+    s.Valid.insert(s.Valid.end(), block.Valid.begin(), block.Valid.end());
+    const vtkIdType values = s.Normals->GetNumberOfValues();
+    s.Normals->SetNumberOfValues(values + static_cast<vtkIdType>(block.Normals.size()));
+    std::copy(block.Normals.begin(), block.Normals.end(), s.Normals->GetPointer(values));
+    block.Clear();
+  }
+  return first;
+}
+
+//------------------------------------------------------------------------------
 // The m triangles around a vertex (`corners`, 3 * geometry triangle + corner) in classes: those
 // of one polygon, and those across an edge whose faces are within the feature angle.
 void Build::GroupCreaseFaces(
-  const std::uint32_t* corners, int m, double cosAngle, Classes& classes) const
+  const std::uint32_t* corners, int m, double cosAngle, Classes& classes, Sides& sides) const
 {
   classes.Reset(m);
   auto triangle = [&](int i) { return this->Geometry[corners[i] / 3]; };
@@ -576,8 +668,8 @@ void Build::GroupCreaseFaces(
   {
     for (size_t b = a + 1; b < keyed.size() && keyed[b].first == keyed[a].first; ++b)
     {
-      const float* na = this->Faces[keyed[a].second].data();
-      const float* nb = this->Faces[keyed[b].second].data();
+      const float* na = sides.Faces[keyed[a].second].data();
+      const float* nb = sides.Faces[keyed[b].second].data();
       if (vtkMath::Dot(na, na) > 0.0f && vtkMath::Dot(na, nb) >= cosAngle)
       {
         classes.Unite(keyed[a].second, keyed[b].second);
@@ -608,8 +700,8 @@ void Build::SumSides(int m, Classes& classes, Sides& sides) const
       sides.Areas.push_back(0.0);
     }
     const int side = sides.Of[i] = sideOfRoot[root];
-    const float* n = this->Faces[i].data();
-    const double area = this->Faces[i][3];
+    const float* n = sides.Faces[i].data();
+    const double area = sides.Faces[i][3];
     for (int k = 0; k < 3; ++k)
     {
       sides.Sums[side][k] += n[k];
@@ -624,7 +716,8 @@ void Build::SumSides(int m, Classes& classes, Sides& sides) const
 // One receiving point per side of a vertex, but a side without a direction, or a fold (a small
 // side facing against a clearly oriented vertex: a scan's folded triangle, not a crease), joins
 // the vertex's largest side.
-void Build::MakeSidePoints(vtkIdType v, Sides& sides, std::vector<vtkIdType>& pointOfSide)
+void Build::MakeSidePoints(
+  vtkIdType v, Sides& sides, std::vector<vtkIdType>& pointOfSide, PointBlock& block)
 {
   const std::vector<std::array<double, 3>>& sums = sides.Sums;
   const std::vector<double>& areas = sides.Areas;
@@ -661,14 +754,14 @@ void Build::MakeSidePoints(vtkIdType v, Sides& sides, std::vector<vtkIdType>& po
   {
     if (!joins(s))
     {
-      pointOfSide[s] = this->AddPoint(v, ordinal++, sums[s].data());
+      pointOfSide[s] = this->AddPoint(block, v, ordinal++, sums[s].data());
     }
   }
   const double none[3] = { 0.0, 0.0, 0.0 };
   const vtkIdType fallback = pointOfSide[largest] >= 0
     ? pointOfSide[largest]
     : (this->VertexFirstPoint[v] >= 0 ? this->VertexFirstPoint[v]
-                                      : this->AddPoint(v, ordinal, none));
+                                      : this->AddPoint(block, v, ordinal, none));
   for (vtkIdType& point : pointOfSide)
   {
     point = point >= 0 ? point : fallback;
@@ -680,6 +773,8 @@ void Build::MakeSidePoints(vtkIdType v, Sides& sides, std::vector<vtkIdType>& po
 // one side (a point's normal is never split); its normal is the sum of theirs.
 void Build::SidesFromNormals(vtkDataArray* normals, double cosAngle)
 {
+  std::vector<PointBlock> points(1); // one block, the only one: its ids are the surface's
+  PointBlock& block = points.front();
   std::vector<vtkIdType> cluster(this->N, -1);
   for (vtkIdType v = 0; v + 1 < static_cast<vtkIdType>(this->IncidentStart.size()); ++v)
   {
@@ -729,10 +824,11 @@ void Build::SidesFromNormals(vtkDataArray* normals, double cosAngle)
     std::vector<vtkIdType> pointOfSide(sums.size());
     for (size_t s = 0; s < sums.size(); ++s)
     {
-      pointOfSide[s] = this->AddPoint(v, static_cast<unsigned int>(s), sums[s].data());
+      pointOfSide[s] = this->AddPoint(block, v, static_cast<unsigned int>(s), sums[s].data());
     }
     const double none[3] = { 0.0, 0.0, 0.0 };
-    const vtkIdType fallback = sums.empty() ? this->AddPoint(v, 0, none) : pointOfSide.front();
+    const vtkIdType fallback =
+      sums.empty() ? this->AddPoint(block, v, 0, none) : pointOfSide.front();
     for (size_t i = 0; i < members.size(); ++i)
     {
       cluster[members[i]] = sideOf[i] >= 0 ? pointOfSide[sideOf[i]] : fallback;
@@ -745,6 +841,7 @@ void Build::SidesFromNormals(vtkDataArray* normals, double cosAngle)
       this->TriPoint[3 * t + k] = static_cast<std::uint32_t>(cluster[this->TriInput[3 * t + k]]);
     }
   }
+  this->StorePoints(points, 1);
 }
 
 //------------------------------------------------------------------------------
