@@ -18,6 +18,7 @@
 #include <cfloat>
 #include <cmath>
 #include <numeric>
+#include <utility>
 
 namespace
 {
@@ -87,6 +88,61 @@ double Distance2(const float p[3], const float a[3], const float b[3], const flo
   }
   return Dot(q, q);
 }
+
+//------------------------------------------------------------------------------
+// The sum of the lengths of a surface's triangles' edges: fixed blocks on every core, summed in
+// order, so that it is the same whatever the number of threads.
+double EdgeLengths(const vtkApertureSurface& s)
+{
+  constexpr vtkIdType block = 65536; // triangles
+  std::vector<double> sums((s.GetNumberOfTriangles() + block - 1) / block, 0.0);
+  vtkApertureSMP::For(0, static_cast<vtkIdType>(sums.size()), 1,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType b = begin; b < end; ++b)
+      {
+        for (vtkIdType t = b * block; t < std::min((b + 1) * block, s.GetNumberOfTriangles()); ++t)
+        {
+          const std::uint32_t* v = &s.Triangles[3 * t];
+          for (int k = 0; k < 3; ++k)
+          {
+            double d[3];
+            Subtract(&s.Vertices[3 * size_t(v[k])], &s.Vertices[3 * size_t(v[(k + 1) % 3])], d);
+            sums[b] += std::sqrt(Dot(d, d));
+          }
+        }
+      }
+    });
+  return std::accumulate(sums.begin(), sums.end(), 0.0);
+}
+
+//------------------------------------------------------------------------------
+// Whether triangle t has a corner with a valid receiving point (`points`, those of vertex v from
+// first[v]) whose normal is within acos(PullBack) of perpendicular to the triangle, or against it.
+bool AtSteepPoint(const vtkApertureSurface& surface, const std::vector<vtkIdType>& first,
+  const std::vector<vtkIdType>& points, vtkIdType t)
+{
+  const std::uint32_t* v = &surface.Triangles[3 * t];
+  double e1[3], e2[3];
+  Subtract(&surface.Vertices[3 * size_t(v[1])], &surface.Vertices[3 * size_t(v[0])], e1);
+  Subtract(&surface.Vertices[3 * size_t(v[2])], &surface.Vertices[3 * size_t(v[0])], e2);
+  const double normal[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+    e1[0] * e2[1] - e1[1] * e2[0] };
+  const double length = std::sqrt(Dot(normal, normal));
+  for (int c = 0; c < 3; ++c)
+  {
+    for (vtkIdType k = first[v[c]]; k < first[v[c] + 1]; ++k)
+    {
+      const float* n = surface.GetNormal(points[k]);
+      const double cosine = (n[0] * normal[0] + n[1] * normal[1] + n[2] * normal[2]) / length;
+      if (surface.Valid[points[k]] && !(cosine >= vtkApertureRayOffsets::PullBack))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -94,7 +150,12 @@ vtkApertureRayRisks::vtkApertureRayRisks(const std::vector<const vtkApertureSurf
 {
   // The ray start of every valid receiving point, and two mean edges as the cell size.
   double edges = 0.0;
-  vtkIdType count = 0;
+  vtkIdType count = 0, points = 0;
+  for (const vtkApertureSurface* s : receivers)
+  {
+    points += s->GetNumberOfPoints();
+  }
+  this->Starts.reserve(points);
   for (const vtkApertureSurface* s : receivers)
   {
     for (vtkIdType i = 0; i < s->GetNumberOfPoints(); ++i)
@@ -111,14 +172,8 @@ vtkApertureRayRisks::vtkApertureRayRisks(const std::vector<const vtkApertureSurf
       this->Starts.push_back(start);
       this->LargestRadius = std::max(this->LargestRadius, start.Radius);
     }
-    for (size_t t = 0; t < s->Triangles.size(); ++t)
-    {
-      double d[3];
-      Subtract(&s->Vertices[3 * size_t(s->Triangles[t])],
-        &s->Vertices[3 * size_t(s->Triangles[t - t % 3 + (t + 1) % 3])], d);
-      edges += std::sqrt(Dot(d, d));
-      ++count;
-    }
+    edges += EdgeLengths(*s);
+    count += 3 * s->GetNumberOfTriangles();
   }
   if (this->Starts.empty())
   {
@@ -135,25 +190,76 @@ vtkApertureRayRisks::vtkApertureRayRisks(const std::vector<const vtkApertureSurf
   this->Size =
     static_cast<float>(std::max(count ? 2.0 * edges / count : 0.0, 4.0 * this->LargestRadius));
   this->Size = this->Size > 0.0f ? this->Size : 1.0f;
-  std::vector<std::uint64_t> keys(this->Starts.size());
-  for (size_t i = 0; i < this->Starts.size(); ++i)
-  {
-    const float* p = this->Starts[i].Position;
-    keys[i] = Key(this->Index(p[0], 0), this->Index(p[1], 1), this->Index(p[2], 2));
-  }
-  this->Order.resize(this->Starts.size());
-  std::iota(this->Order.begin(), this->Order.end(), 0u);
-  std::sort(this->Order.begin(), this->Order.end(),
-    [&keys](std::uint32_t a, std::uint32_t b) { return keys[a] < keys[b]; });
-  for (std::uint32_t i = 0; i < this->Order.size();)
-  {
-    std::uint32_t j = i;
-    while (j < this->Order.size() && keys[this->Order[j]] == keys[this->Order[i]])
+  this->SortStarts();
+}
+
+//------------------------------------------------------------------------------
+// The starts in the order of their cells' keys (a cell's starts side by side in memory), and
+// the table of the cells with their runs of starts, at least twice as many slots as cells.
+void vtkApertureRayRisks::SortStarts()
+{
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(this->Starts.size());
+  vtkApertureSMP::For(0, static_cast<vtkIdType>(keyed.size()), 4096,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      ++j;
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const float* p = this->Starts[i].Position;
+        keyed[i] = { Key(this->Index(p[0], 0), this->Index(p[1], 1), this->Index(p[2], 2)),
+          static_cast<std::uint32_t>(i) };
+      }
+    });
+  vtkApertureSMP::Sort(keyed.begin(), keyed.end(),
+    [](const std::pair<std::uint64_t, std::uint32_t>& a,
+      const std::pair<std::uint64_t, std::uint32_t>& b) { return a < b; });
+  std::vector<Start> sorted(this->Starts.size());
+  std::vector<Cell> runs;
+  for (std::uint32_t i = 0; i < keyed.size(); ++i)
+  {
+    sorted[i] = this->Starts[keyed[i].second];
+    if (runs.empty() || runs.back().Key != keyed[i].first)
+    {
+      runs.push_back({ keyed[i].first, i, i });
     }
-    this->Cells[keys[this->Order[i]]] = { i, j };
-    i = j;
+    ++runs.back().End;
+  }
+  this->Starts.swap(sorted);
+  this->CellBits = 1;
+  while ((size_t(1) << this->CellBits) < 2 * runs.size())
+  {
+    ++this->CellBits;
+  }
+  this->Cells.assign(size_t(1) << this->CellBits, Cell{ FreeCell, 0, 0 });
+  const size_t mask = this->Cells.size() - 1;
+  for (const Cell& run : runs)
+  {
+    size_t slot = this->Slot(run.Key);
+    while (this->Cells[slot].Key != FreeCell)
+    {
+      slot = (slot + 1) & mask;
+    }
+    this->Cells[slot] = run;
+  }
+}
+
+//------------------------------------------------------------------------------
+// Fibonacci hashing: the top CellBits bits of the key times 2^64 / golden ratio.
+size_t vtkApertureRayRisks::Slot(std::uint64_t key) const
+{
+  return static_cast<size_t>((key * 0x9E3779B97F4A7C15ull) >> (64 - this->CellBits));
+}
+
+//------------------------------------------------------------------------------
+const vtkApertureRayRisks::Cell* vtkApertureRayRisks::FindCell(std::uint64_t key) const
+{
+  const size_t mask = this->Cells.size() - 1;
+  for (size_t slot = this->Slot(key);; slot = (slot + 1) & mask)
+  {
+    const Cell& cell = this->Cells[slot];
+    if (cell.Key == key || cell.Key == FreeCell)
+    {
+      return cell.Key == key ? &cell : nullptr;
+    }
   }
 }
 
@@ -212,29 +318,14 @@ void vtkApertureRayRisks::MarkIncident(const vtkApertureSurface& surface,
   {
     points[fill[surface.PointVertex[i]]++] = static_cast<vtkIdType>(i);
   }
-  for (size_t t = 0; t < risky.size(); ++t)
-  {
-    if (!only.empty() && !only[t])
+  vtkApertureSMP::For(0, static_cast<vtkIdType>(risky.size()), 1024,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      continue;
-    }
-    const std::uint32_t* v = &surface.Triangles[3 * t];
-    double e1[3], e2[3];
-    Subtract(&surface.Vertices[3 * size_t(v[1])], &surface.Vertices[3 * size_t(v[0])], e1);
-    Subtract(&surface.Vertices[3 * size_t(v[2])], &surface.Vertices[3 * size_t(v[0])], e2);
-    double normal[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-      e1[0] * e2[1] - e1[1] * e2[0] };
-    const double length = std::sqrt(Dot(normal, normal));
-    for (int c = 0; c < 3 && !risky[t]; ++c)
-    {
-      for (vtkIdType k = first[v[c]]; k < first[v[c] + 1] && !risky[t]; ++k)
+      for (vtkIdType t = begin; t < end; ++t)
       {
-        const float* n = surface.GetNormal(points[k]);
-        const double cosine = (n[0] * normal[0] + n[1] * normal[1] + n[2] * normal[2]) / length;
-        risky[t] = surface.Valid[points[k]] && !(cosine >= vtkApertureRayOffsets::PullBack);
+        risky[t] = (only.empty() || only[t]) && AtSteepPoint(surface, first, points, t);
       }
-    }
-  }
+    });
 }
 
 //------------------------------------------------------------------------------
@@ -268,14 +359,10 @@ bool vtkApertureRayRisks::NearStart(const vtkApertureSurface& surface, std::uint
     {
       for (std::int64_t k = lo[2]; k <= hi[2]; ++k)
       {
-        const auto found = this->Cells.find(Key(i, j, k));
-        if (found == this->Cells.end())
+        const Cell* found = this->FindCell(Key(i, j, k));
+        for (std::uint32_t c = found ? found->Begin : 0; found && c < found->End; ++c)
         {
-          continue;
-        }
-        for (std::uint32_t c = found->second.first; c < found->second.second; ++c)
-        {
-          const Start& s = this->Starts[this->Order[c]];
+          const Start& s = this->Starts[c];
           const float* q = s.Position;
           if (q[0] < box[0] || q[0] > box[1] || q[1] < box[2] || q[1] > box[3] || q[2] < box[4] ||
             q[2] > box[5])

@@ -30,9 +30,8 @@
 #include "vtkApertureLightingCoreModule.h" // For export macro
 #include "vtkType.h"
 
+#include <cstddef>
 #include <cstdint>
-#include <unordered_map>
-#include <utility>
 #include <vector>
 
 class vtkApertureSurface;
@@ -70,9 +69,20 @@ private:
   bool NearStart(const vtkApertureSurface& surface, std::uint32_t triangle) const;
 
   std::vector<Start> Starts;
-  std::unordered_map<std::uint64_t, std::pair<std::uint32_t, std::uint32_t>> Cells;
-  std::vector<std::uint32_t> Order; // starts by cell
-  float Size = 1.0f;                // of a cell
+  // The cells that hold starts: an open-addressing hash table (linear probing) of each cell's
+  // key and its run of Starts; a free slot has the key FreeCell, which no cell has.
+  struct Cell
+  {
+    std::uint64_t Key;
+    std::uint32_t Begin, End;
+  };
+  static constexpr std::uint64_t FreeCell = ~std::uint64_t(0);
+  void SortStarts();
+  const Cell* FindCell(std::uint64_t key) const;
+  std::size_t Slot(std::uint64_t key) const;
+  std::vector<Cell> Cells;
+  int CellBits = 0;  // Cells has 2^CellBits slots
+  float Size = 1.0f; // of a cell
   float Lower[3] = { 0.0f, 0.0f, 0.0f };
   float LargestRadius = 0.0f;
 };
