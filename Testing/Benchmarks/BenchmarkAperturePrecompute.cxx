@@ -23,7 +23,8 @@
 // Usage: BenchmarkAperturePrecompute <Testing/Data folder>
 //          [--quick | --large TRIANGLES | --visibility POINTS]
 // --quick runs a few points only (a smoke test that the benchmark still works); --large
-// measures memory and throughput on the bunny split and copied to at least TRIANGLES instead;
+// measures memory and throughput on the bunny split and copied to at least TRIANGLES instead,
+// and what of the filter's time is not rays (its surface intake, its scene);
 // --visibility the time and memory of vtkLightSphereVisibility's bit-packed matrix at k = 1026
 // on such a surface of at least POINTS points.
 
@@ -284,6 +285,19 @@ double RunBare(const vtkApertureSurface& surface, const Rays& rays, int perPoint
   return Seconds([&]() { vtkSMPTools::For(0, n, 16, loop); }, repeats);
 }
 
+// Seconds of the filter's scene alone: the choice of the triangles with the hit filter, and
+// Embree's BVH.
+double RunScene(const vtkApertureSurface& surface, int structure, int repeats)
+{
+  return Seconds(
+    [&]()
+    {
+      vtkApertureRayScene scene;
+      scene.Build({ &surface }, {}, structure);
+    },
+    repeats);
+}
+
 // Seconds of the filter's surface intake alone (validation, welding, winding, creases, normals).
 double RunIntake(vtkPolyData* mesh, int repeats)
 {
@@ -441,6 +455,12 @@ void LargeMesh(vtkPolyData* bunny, vtkIdType triangles)
       structure == vtkAperturePrecompute::AUTOMATIC ? "default" : "fast BVH", filter, bare,
       bare / filter);
   }
+  // What the filter does beside the rays, one run each.
+  std::printf(
+    "| surface intake (ids, welding, winding, creases, normals) | %.1f s |\n", RunIntake(mesh, 1));
+  std::printf("| scene: hit-filter choice and BVH, default / fast BVH | %.1f s / %.1f s |\n",
+    RunScene(surface, vtkApertureRayScene::AUTOMATIC, 1),
+    RunScene(surface, vtkApertureRayScene::FAST, 1));
 }
 
 // Issue 25's visibility matrix for a million vertices: vtkLightSphereVisibility at k = 1026 with
