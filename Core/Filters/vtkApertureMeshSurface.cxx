@@ -25,6 +25,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <numeric>
 
@@ -86,8 +87,8 @@ struct PointBlock
   }
 };
 
-// Vertices a block of SidesFromCreases() (the bunny has 9), and blocks a wave: only one wave's
-// points are held twice.
+// Vertices a block of the loops over vertices (the bunny has 9 blocks), and blocks a wave of
+// SidesFromCreases(): only one wave's points are held twice.
 constexpr vtkIdType BlockVertices = 4096;
 constexpr vtkIdType WaveBlocks = 64;
 }
@@ -362,21 +363,26 @@ void Build::Orient()
 bool Build::Consistent() const
 {
   const vtkIdType vertices = static_cast<vtkIdType>(this->IncidentStart.size()) - 1;
-  std::vector<vtkIdType> ends;
-  for (vtkIdType v = 0; v < vertices; ++v)
-  {
-    ends.clear();
-    for (vtkIdType c = this->IncidentStart[v]; c < this->IncidentStart[v + 1]; ++c)
+  std::atomic<bool> consistent(true);
+  vtkApertureSMP::For(0, vertices, BlockVertices,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      ends.push_back(this->Neighbour(this->Incident[c], 1));
-    }
-    std::sort(ends.begin(), ends.end());
-    if (std::adjacent_find(ends.begin(), ends.end()) != ends.end())
-    {
-      return false;
-    }
-  }
-  return true;
+      std::vector<vtkIdType> ends;
+      for (vtkIdType v = begin; v < end && consistent.load(std::memory_order_relaxed); ++v)
+      {
+        ends.clear();
+        for (vtkIdType c = this->IncidentStart[v]; c < this->IncidentStart[v + 1]; ++c)
+        {
+          ends.push_back(this->Neighbour(this->Incident[c], 1));
+        }
+        std::sort(ends.begin(), ends.end());
+        if (std::adjacent_find(ends.begin(), ends.end()) != ends.end())
+        {
+          consistent = false;
+        }
+      }
+    });
+  return consistent;
 }
 
 //------------------------------------------------------------------------------
