@@ -15,6 +15,7 @@
 #include "vtkApertureText.h"
 
 #include <atomic>
+#include <unistd.h>
 #include <utility>
 
 namespace
@@ -72,7 +73,20 @@ vtkApertureRayScene::~vtkApertureRayScene()
 //------------------------------------------------------------------------------
 bool vtkApertureRayScene::IsCompact(int structure, vtkIdType triangles)
 {
-  return structure == COMPACT || (structure == AUTOMATIC && triangles > CompactThreshold);
+  return structure == COMPACT || (structure == AUTOMATIC && triangles > GetCompactThreshold());
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkApertureRayScene::GetCompactThreshold()
+{
+  static const vtkIdType threshold = []()
+  {
+    const long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGESIZE);
+    // Where the memory cannot be read (sysconf fails: -1), an 8 GiB machine's.
+    const double bytes = pages > 0 && size > 0 ? double(pages) * size : 8.0 * (1 << 30);
+    return static_cast<vtkIdType>(bytes / 8.0 / 128.0);
+  }();
+  return threshold;
 }
 
 //------------------------------------------------------------------------------

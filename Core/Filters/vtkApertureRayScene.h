@@ -73,13 +73,17 @@ public:
   /// Embree's acceleration structures.
   enum Structures
   {
-    AUTOMATIC = 0, ///< FAST up to CompactThreshold triangles, COMPACT above
+    AUTOMATIC = 0, ///< FAST up to GetCompactThreshold() triangles, COMPACT above
     COMPACT = 1,   ///< about 70% of the memory, about 75% of the speed
     FAST = 2
   };
 
-  /// Triangles above which AUTOMATIC builds the compact structure (about 1 GB of fast BVH).
-  static constexpr vtkIdType CompactThreshold = 8000000;
+  /**
+   * Triangles above which AUTOMATIC builds the compact structure: where the fast one, about 128
+   * bytes a triangle with its build arrays, would take more than an eighth of the machine's
+   * physical memory (8 million triangles on 8 GiB, 25 million on 24 GiB).
+   */
+  static vtkIdType GetCompactThreshold();
 
   /**
    * Whether a structure setting builds the compact BVH for this many triangles.

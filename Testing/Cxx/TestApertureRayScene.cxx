@@ -12,6 +12,7 @@
 // surface's own index buffer (one geometry each) or copied into one geometry. Both must block
 // the same rays, ray by ray: on a rough surface, whose filtered triangles are scattered into
 // thousands of runs (which the default copies), and on a smooth one (which the default shares).
+// Also which BVH AUTOMATIC builds for a number of triangles.
 
 #include "vtkApertureRayPacket.h"
 #include "vtkApertureRaySampler.h"
@@ -29,6 +30,7 @@
 #include <iostream>
 #include <limits>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace
@@ -207,6 +209,27 @@ bool KeepOnlyReachable(vtkPolyData* grid)
   }
   return ok;
 }
+
+// AUTOMATIC builds the fast BVH while about 128 bytes a triangle stay under an eighth of this
+// machine's memory, the compact one above; COMPACT and FAST are what they say.
+bool ChooseStructure()
+{
+  using Scene = vtkApertureRayScene;
+  const vtkIdType threshold = Scene::GetCompactThreshold();
+  const double memory = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
+  const double bytes = memory / 8.0 / static_cast<double>(threshold);
+  std::cout << "compact BVH above " << threshold << " triangles (" << memory / (1 << 30)
+            << " GiB: " << bytes << " bytes a triangle in an eighth)\n";
+  const bool ok = bytes > 127.0 && bytes < 129.0 &&
+    !Scene::IsCompact(Scene::AUTOMATIC, threshold) &&
+    Scene::IsCompact(Scene::AUTOMATIC, threshold + 1) && Scene::IsCompact(Scene::COMPACT, 1) &&
+    !Scene::IsCompact(Scene::FAST, 4 * threshold);
+  if (!ok)
+  {
+    std::cerr << "FAIL the BVH chosen for a number of triangles\n";
+  }
+  return ok;
+}
 }
 
 int TestApertureRayScene(int, char*[])
@@ -216,5 +239,6 @@ int TestApertureRayScene(int, char*[])
   // Heights of 1 spacing: a gentler surface, whose few filtered triangles leave long runs.
   ok = Compare("smooth", Grid(80, 1.0), true) && ok;
   ok = KeepOnlyReachable(Grid(80, 3.0)) && ok;
+  ok = ChooseStructure() && ok;
   return ok ? 0 : 1;
 }
