@@ -87,10 +87,10 @@ struct PointBlock
   }
 };
 
-// Vertices a block of the loops over vertices (the bunny has 9 blocks), and blocks a wave of
-// SidesFromCreases(): only one wave's points are held twice.
-constexpr vtkIdType BlockVertices = 4096;
-constexpr vtkIdType WaveBlocks = 64;
+// Vertices a block of the loops over vertices, and blocks a wave of SidesFromCreases(): only one
+// wave's points are held twice (the bunny has 36 blocks in 3 waves).
+constexpr vtkIdType BlockVertices = 1024;
+constexpr vtkIdType WaveBlocks = 16;
 }
 
 //------------------------------------------------------------------------------
@@ -629,9 +629,11 @@ std::vector<vtkIdType> Build::StorePoints(std::vector<PointBlock>& blocks, vtkId
     s.PointVertex.insert(s.PointVertex.end(), block.Vertex.begin(), block.Vertex.end());
     s.Key.insert(s.Key.end(), block.Key.begin(), block.Key.end());
     s.Valid.insert(s.Valid.end(), block.Valid.begin(), block.Valid.end());
+    // WritePointer() grows the array geometrically and never shrinks it (SetNumberOfValues()
+    // would reallocate it to the exact size at every block).
     const vtkIdType values = s.Normals->GetNumberOfValues();
-    s.Normals->SetNumberOfValues(values + static_cast<vtkIdType>(block.Normals.size()));
-    std::copy(block.Normals.begin(), block.Normals.end(), s.Normals->GetPointer(values));
+    float* normals = s.Normals->WritePointer(values, static_cast<vtkIdType>(block.Normals.size()));
+    std::copy(block.Normals.begin(), block.Normals.end(), normals);
     block.Clear();
   }
   return first;

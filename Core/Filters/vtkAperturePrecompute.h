@@ -369,8 +369,9 @@ public:
   ///@{
   /**
    * Embree's acceleration structure. AUTOMATIC (default) builds the fast one while it takes under
-   * an eighth of the machine's physical memory (up to 8 million triangles on 8 GiB, 25 million on
-   * 24 GiB) and the compact one above (about 70% of the memory, 75% of the speed).
+   * an eighth of the machine's physical memory or container limit (up to 8 million triangles on 8
+   * GiB, 25 million on 24 GiB) and the compact one above (about 70% of the memory, 75% of the
+   * speed).
    */
   vtkSetClampMacro(AccelerationStructure, int, AUTOMATIC, FAST);
   vtkGetMacro(AccelerationStructure, int);

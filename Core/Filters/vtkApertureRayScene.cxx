@@ -14,7 +14,9 @@
 #include "vtkApertureSurface.h"
 #include "vtkApertureText.h"
 
+#include <algorithm>
 #include <atomic>
+#include <fstream>
 #include <unistd.h>
 #include <utility>
 
@@ -83,7 +85,15 @@ vtkIdType vtkApertureRayScene::GetCompactThreshold()
   {
     const long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGESIZE);
     // Where the memory cannot be read (sysconf fails: -1), an 8 GiB machine's.
-    const double bytes = pages > 0 && size > 0 ? double(pages) * size : 8.0 * (1 << 30);
+    double bytes = pages > 0 && size > 0 ? double(pages) * size : 8.0 * (1 << 30);
+    // A container's limit where lower (cgroup v2, then v1; "max" or a huge value: none).
+    for (const char* file :
+      { "/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory/memory.limit_in_bytes" })
+    {
+      std::ifstream limit(file);
+      double cgroup = 0.0;
+      bytes = limit >> cgroup && cgroup > 0.0 ? std::min(bytes, cgroup) : bytes;
+    }
     return static_cast<vtkIdType>(bytes / 8.0 / 128.0);
   }();
   return threshold;

@@ -81,7 +81,8 @@ public:
   /**
    * Triangles above which AUTOMATIC builds the compact structure: where the fast one, about 128
    * bytes a triangle with its build arrays, would take more than an eighth of the machine's
-   * physical memory (8 million triangles on 8 GiB, 25 million on 24 GiB).
+   * physical memory, or of its container's limit where lower (8 million triangles on 8 GiB, 25
+   * million on 24 GiB).
    */
   static vtkIdType GetCompactThreshold();
 

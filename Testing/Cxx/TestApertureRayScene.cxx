@@ -211,7 +211,8 @@ bool KeepOnlyReachable(vtkPolyData* grid)
 }
 
 // AUTOMATIC builds the fast BVH while about 128 bytes a triangle stay under an eighth of this
-// machine's memory, the compact one above; COMPACT and FAST are what they say.
+// machine's memory (or less, a container's limit), the compact one above; COMPACT and FAST are
+// what they say.
 bool ChooseStructure()
 {
   using Scene = vtkApertureRayScene;
@@ -220,7 +221,7 @@ bool ChooseStructure()
   const double bytes = memory / 8.0 / static_cast<double>(threshold);
   std::cout << "compact BVH above " << threshold << " triangles (" << memory / (1 << 30)
             << " GiB: " << bytes << " bytes a triangle in an eighth)\n";
-  const bool ok = bytes > 127.0 && bytes < 129.0 &&
+  const bool ok = bytes > 127.0 && threshold >= 1000000 &&
     !Scene::IsCompact(Scene::AUTOMATIC, threshold) &&
     Scene::IsCompact(Scene::AUTOMATIC, threshold + 1) && Scene::IsCompact(Scene::COMPACT, 1) &&
     !Scene::IsCompact(Scene::FAST, 4 * threshold);
