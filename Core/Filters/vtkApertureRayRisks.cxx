@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <functional>
 #include <numeric>
 #include <utility>
 
@@ -209,9 +210,7 @@ void vtkApertureRayRisks::SortStarts()
           static_cast<std::uint32_t>(i) };
       }
     });
-  vtkApertureSMP::Sort(keyed.begin(), keyed.end(),
-    [](const std::pair<std::uint64_t, std::uint32_t>& a,
-      const std::pair<std::uint64_t, std::uint32_t>& b) { return a < b; });
+  vtkApertureSMP::Sort(keyed.begin(), keyed.end(), std::less<>());
   std::vector<Start> sorted(this->Starts.size());
   std::vector<Cell> runs;
   for (std::uint32_t i = 0; i < keyed.size(); ++i)
