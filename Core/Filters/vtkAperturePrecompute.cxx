@@ -629,9 +629,22 @@ bool vtkAperturePrecompute::vtkRun::ChooseMethod()
       "No-data as walls or filled applies to horizon sweeps; this update casts rays, where "
       "no-data stays open.");
   }
+  if (self->EarthRadius > 0.0 && !this->Horizons)
+  {
+    vtkWarningWithObjectMacro(this->Self,
+      "The Earth's curvature applies to horizon sweeps; this update casts rays over the ground "
+      "as it is.");
+  }
   if (!std::isfinite(self->SectorRotation))
   {
     vtkErrorWithObjectMacro(this->Self, "The sector rotation must be finite.");
+    return false;
+  }
+  if (!(self->EarthRadius >= 0.0 && self->EarthRadius < VTK_DOUBLE_MAX))
+  {
+    vtkErrorWithObjectMacro(this->Self,
+      "The Earth radius must be 0 (flat ground) or positive and finite, not " << self->EarthRadius
+                                                                              << ".");
     return false;
   }
   return true;
@@ -659,6 +672,7 @@ bool vtkAperturePrecompute::vtkRun::SweepHorizons(const int extent[6])
   settings.PositiveOpenness = self->ComputePositiveOpenness;
   settings.NegativeOpenness = self->ComputeNegativeOpenness;
   settings.SectorRotation = self->SectorRotation;
+  settings.EarthRadius = self->EarthRadius;
   settings.NoDataAs = self->NoDataAs;
   settings.WallHeight = self->NoDataWallHeight;
   settings.FillDistance = self->NoDataFillDistance;
@@ -1255,6 +1269,7 @@ void vtkAperturePrecompute::PrintSettings(ostream& os, vtkIndent indent)
   os << indent << "ComputePositiveOpenness: " << this->ComputePositiveOpenness << "\n";
   os << indent << "ComputeNegativeOpenness: " << this->ComputeNegativeOpenness << "\n";
   os << indent << "SectorRotation: " << this->SectorRotation << "\n";
+  os << indent << "EarthRadius: " << this->EarthRadius << "\n";
   static const char* const noData[] = { "Open", "Wall", "Fill" };
   os << indent << "NoDataAs: " << noData[this->NoDataAs] << "\n";
   os << indent << "NoDataWallHeight: " << this->NoDataWallHeight << "\n";

@@ -255,6 +255,18 @@ public:
   vtkGetMacro(SectorRotation, double);
   ///@}
 
+  ///@{
+  /**
+   * Radius of the sphere a height field's ground lies on, in its horizontal world units:
+   * 6371000 for the Earth in metres (GRASS's r.horizon and r.sun take that), R / (1 − k) to
+   * count refraction of coefficient k. A sample at distance d then lies d²/2R lower as seen
+   * from a texel: 7.8 m at 10 km, 785 m at 100 km. Default 0: flat ground. Horizon sweeps
+   * only (the filter warns with rays); every output sees the curved ground.
+   */
+  vtkSetMacro(EarthRadius, double);
+  vtkGetMacro(EarthRadius, double);
+  ///@}
+
   enum NoDataTreatments
   {
     NO_DATA_OPEN = 0,
@@ -543,6 +555,7 @@ protected:
   bool ComputePositiveOpenness = false;
   bool ComputeNegativeOpenness = false;
   double SectorRotation = 0.0;
+  double EarthRadius = 0.0;
   int NoDataAs = NO_DATA_OPEN;
   double NoDataWallHeight = std::numeric_limits<double>::quiet_NaN();
   int NoDataFillDistance = 64;

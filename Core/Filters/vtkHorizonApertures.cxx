@@ -88,6 +88,11 @@ bool CheckGrid(const vtkHorizonApertures::Grid& grid, Field& field, std::string&
     error = "The sector rotation must be finite.";
     return false;
   }
+  if (!(grid.EarthRadius >= 0.0 && grid.EarthRadius < VTK_DOUBLE_MAX))
+  {
+    error = "The Earth radius must be 0 (flat ground) or positive and finite.";
+    return false;
+  }
   const vtkIdType* e = grid.OutputExtent;
   const bool whole = e[1] < e[0] || e[3] < e[2];
   if (!whole && (e[0] < 0 || e[1] >= grid.Nx || e[2] < 0 || e[3] >= grid.Ny))
@@ -310,6 +315,10 @@ struct Lines
   int Step;         // Sectors[0]'s way along the major axis, +1 or -1
   double Delta;     // world distance between samples
   vtkIdType Window; // samples within MaximumDistance
+  // On a curved Earth, Δ²/R: sample a (its major index in the whole DEM) is lowered by
+  // Curvature a²/2 before the sweeps (0: flat ground).
+  double Curvature;
+  vtkIdType Anchor; // the grid's Origin along the major axis
   std::vector<vtkIdType> Nearest;
   std::vector<double> Offset;
   vtkIdType FirstLine, LastLine;
@@ -351,6 +360,8 @@ Lines::Lines(const Field& f, const vtkHorizonApertures::Grid& grid, int sector, 
   this->MinorStride = this->Major == 0 ? f.Nx : 1;
   this->Step = (this->Major == 0 ? this->Sectors[0].Cos : this->Sectors[0].Sin) > 0.0 ? 1 : -1;
   this->Delta = f.Spacing[this->Major] / std::abs(along);
+  this->Curvature = grid.EarthRadius > 0.0 ? this->Delta * this->Delta / grid.EarthRadius : 0.0;
+  this->Anchor = grid.Origin[this->Major];
   this->Nearest.resize(this->NMajor);
   this->Offset.resize(this->NMajor);
   for (vtkIdType m = 0; m < this->NMajor; ++m)
@@ -358,7 +369,9 @@ Lines::Lines(const Field& f, const vtkHorizonApertures::Grid& grid, int sector, 
     const double x = double(m + grid.Origin[this->Major]) * tau;
     const double nearest = std::floor(x + 0.5);
     this->Nearest[m] = static_cast<vtkIdType>(nearest);
-    this->Offset[m] = x - nearest;
+    // On a texel up to rounding (a diagonal's tau is 1 − 1e-16): exactly, so that the sample
+    // does not need a neighbour, which at the grid's edge is not there.
+    this->Offset[m] = std::abs(x - nearest) < 1e-9 ? 0.0 : x - nearest;
   }
   const auto range = std::minmax_element(this->Nearest.begin(), this->Nearest.end());
   this->FirstLine = -*range.second;
@@ -692,8 +705,12 @@ public:
   vtkIdType GetLength() const { return this->Length; }
   vtkIdType GetNumberOfLines() const { return this->Last - this->First; }
 
-  // Fills the scratch with the heights of the group's samples and receivers.
+  // Fills the scratch with the heights of the group's samples and receivers (lowered by the
+  // Earth's curvature).
   void Gather(Scratch& s) const;
+
+  // Sample k's major index in the whole DEM.
+  double Position(vtkIdType k) const { return double(this->MajorAt(k) + this->L.Anchor); }
 
   // Calls sink(output index, Received) for every receiver.
   template <typename Sink>
@@ -754,6 +771,7 @@ void Group::Gather(Scratch& s) const
   {
     const vtkIdType m = this->MajorAt(k);
     const double offset = l.Offset[m];
+    const double drop = 0.5 * l.Curvature * this->Position(k) * this->Position(k);
     for (vtkIdType c = this->First; c < this->Last; ++c)
     {
       const vtkIdType minor = c + l.Nearest[m], at = (c - this->First) * n + k;
@@ -763,7 +781,7 @@ void Group::Gather(Scratch& s) const
       {
         continue;
       }
-      s.Occluder[at] = this->Interpolate(t, minor, offset);
+      s.Occluder[at] = this->Interpolate(t, minor, offset) - drop;
       vtkIdType i, j;
       l.ToIJ(m, minor, i, j);
       const vtkIdType o = this->F.OutputIndex(i, j);
@@ -776,7 +794,7 @@ void Group::Gather(Scratch& s) const
       if (std::isnan(s.Occluder[at])) // the texel's tangent plane at the sample
       {
         const double rise = this->Normals.GetSlope(o, l.Major, 1 - l.Major); // along the minor axis
-        s.Receiver[at] = this->F.Heights[t] + offset * rise * this->F.Spacing[1 - l.Major];
+        s.Receiver[at] = this->F.Heights[t] + offset * rise * this->F.Spacing[1 - l.Major] - drop;
       }
     }
   }
@@ -804,18 +822,35 @@ void Group::Scatter(const Scratch& s, const Sink& sink) const
   }
 }
 
+// On a curved Earth the sweeps saw heights w = z − c a²/2 (Gather()). From a receiver at a,
+// the slope per step over the curved ground to a sample d steps away, (z − z₀ − c d²/2) / d,
+// is the slope to it over w plus c a where the receiver looks toward larger a, minus c a
+// toward smaller a: an exact correction, so that the hulls stay exact. `toward`: +1 or −1
+// for sample 0's receiver's way; the negated samples' slopes take the opposite sign.
+void Uncurve(const Group& group, double curvature, double toward, double* slopes, vtkIdType n)
+{
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    slopes[k] += toward * curvature * group.Position(k);
+  }
+}
+
 // Sweeps the lines of a group: each line once per sector, and with `lower` once more with its
 // samples negated; then what the pass's sectors take from each receiver.
-void SweepGroup(
-  Scratch& s, LineSweep& sweep, const Lines& lines, vtkIdType count, vtkIdType n, bool lower)
+void SweepGroup(Scratch& s, LineSweep& sweep, const Lines& lines, const Group& group, bool lower)
 {
-  for (vtkIdType c = 0; c < count; ++c)
+  const vtkIdType n = group.GetLength();
+  for (vtkIdType c = 0; c < group.GetNumberOfLines(); ++c)
   {
     double* z = &s.Occluder[c * n];
     double* zr = &s.Receiver[c * n];
     for (int k = 0; k < lines.Count; ++k) // the opposite sector sweeps the other way
     {
       sweep.Run(z, zr, &s.Slope[k][c * n], n, k == 1);
+      if (lines.Curvature > 0.0) // Sectors[0] looks toward the major axis' Step
+      {
+        Uncurve(group, lines.Curvature, k == 0 ? lines.Step : -lines.Step, &s.Slope[k][c * n], n);
+      }
     }
     (lines.Count == 2 ? AddDeficits<2> : AddDeficits<1>)(lines, s, c * n, n);
     if (!lower)
@@ -827,6 +862,11 @@ void SweepGroup(
     for (int k = 0; k < lines.Count; ++k)
     {
       sweep.Run(z, zr, &s.Slope[2 + k][c * n], n, k == 1);
+      if (lines.Curvature > 0.0)
+      {
+        Uncurve(
+          group, lines.Curvature, k == 0 ? -lines.Step : lines.Step, &s.Slope[2 + k][c * n], n);
+      }
     }
   }
 }
@@ -856,7 +896,7 @@ void SweepSector(
           continue;
         }
         group.Gather(s);
-        SweepGroup(s, sweep, lines, group.GetNumberOfLines(), n, lower);
+        SweepGroup(s, sweep, lines, group, lower);
         group.Scatter(s, sink);
       }
     });

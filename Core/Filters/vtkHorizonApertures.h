@@ -29,7 +29,9 @@
  * of a direction is i where |cos φ| / Dx ≥ |sin φ| / Dy, else j. Lines of the direction cross
  * the grid one per integer offset along the minor axis, anchored on the whole DEM's indices
  * (Origin), and have one sample per integer major index, its height interpolated between the
- * two nearest texels along the minor axis; samples Δ = Dx / |cos φ| (or Dy / |sin φ|) apart.
+ * two nearest texels along the minor axis (one within 1e-9 texel of a texel is on it: along
+ * the axes and diagonals, where rounding would otherwise make it need a neighbour off the
+ * grid's edge); samples Δ = Dx / |cos φ| (or Dy / |sin φ|) apart.
  * Each texel is the nearest texel of exactly one line sample, at minor offset fr in
  * [−1/2, 1/2): that sample is where the texel looks from, at the sample's height (the texel's
  * tangent plane at the sample where the interpolation needs a no-data texel or one off the
@@ -79,8 +81,12 @@
  * a texel's up to six triangles with valid corners, so that both methods measure the same
  * hemisphere (central differences differ from them by 1.7° on the Fuji tile; with them the
  * visible fraction was 0.0103 RMS from 4096 rays per texel, with these 0.0088). No-data texels
- * (Valid 0, or a height that is not finite) neither occlude nor receive. Earth curvature is
- * ignored.
+ * (Valid 0, or a height that is not finite) neither occlude nor receive.
+ *
+ * Earth curvature (Grid::EarthRadius): a sample d away counts d²/2R lower. On a line with
+ * positions a Δ, that is the same hull search over heights lowered by Δ² a²/2R, whose slopes
+ * then differ from the curved ground's by a term linear in the receiver's a (derived beside
+ * Uncurve()); the search stays exact, and tiles still equal the whole DEM.
  */
 
 #ifndef vtkHorizonApertures_h
@@ -127,6 +133,10 @@ public:
     /// [SectorRotation + 2πk/D, SectorRotation + 2π(k+1)/D). GRASS's r.horizon directions are
     /// sector middles with SectorRotation = start − π/D.
     double SectorRotation = 0.0;
+    /// Radius of the sphere the ground lies on, in world units (6,371,000 for the Earth in
+    /// metres); 0 (default): flat ground. A sample d away lies d²/2R lower, as GRASS's
+    /// r.horizon and r.sun take it.
+    double EarthRadius = 0.0;
   };
 
   /// The caller's arrays for the output extent (i fastest): 3, 1, 1, 3, 1 and Sectors values

@@ -344,6 +344,7 @@ bool MakeGrid(vtkImageData* image, vtkDataArray* heights, const int extent[6], c
   grid.Dy = std::abs(image->GetSpacing()[1]);
   grid.Sectors = settings.Sectors;
   grid.SectorRotation = vtkMath::RadiansFromDegrees(settings.SectorRotation);
+  grid.EarthRadius = settings.EarthRadius;
   grid.MaximumDistance = settings.MaximumDistance;
   const vtkIdType local[4] = { extent[0] - window[0], extent[1] - window[0], extent[2] - window[2],
     extent[3] - window[2] };

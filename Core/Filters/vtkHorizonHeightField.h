@@ -53,6 +53,8 @@ public:
     bool NegativeOpenness = false;    ///< "NegativeOpenness"
     /// Degrees counter-clockwise from the grid's i axis where sector 0 starts.
     double SectorRotation = 0.0;
+    /// Radius of the sphere the ground lies on, world units; 0: flat (vtkHorizonApertures).
+    double EarthRadius = 0.0;
     /// No-data texels: Open (neither occlude nor receive), Wall, of WallHeight (NaN: the
     /// highest valid height of the window swept), occluding but getting no output, or Fill,
     /// from the valid texels within FillDistance texels (vtkAperturePrecompute::SetNoDataAs()),

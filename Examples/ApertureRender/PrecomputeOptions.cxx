@@ -59,6 +59,9 @@ options:
                          columns (default 0: sector k covers [360k/D, 360(k+1)/D)); -180/D puts
                          the middles on the axes, as SAGA's directions are
   --tile-size N          tiles of N x N texels with --max-distance (default 5120)
+  --earth-curvature      count the Earth's curvature, radius 6371 km as GRASS's r.horizon and
+                         r.sun take it: a sample d away lies d^2/2R lower (7.8 m at 10 km)
+  --earth-radius R       the same on a sphere of R metres (R/(1 - k) counts refraction k)
   --vertical-scale S     factor from the DEM's height unit to metres (default 1; 0.3048: feet)
   --nodata-as MODE       what no-data texels are (they get NaN, unless filled):
                            open  neither occlude nor receive (default)
@@ -90,9 +93,10 @@ bool Number(const std::vector<std::string>& args, size_t& k, double low, double 
   value = std::strtod(args[k].c_str(), &end);
   if (end == args[k].c_str() || *end || !(value >= low && value <= high))
   {
-    return Fail(flag + " takes a number from " + std::to_string(low) + " to " +
-        std::to_string(high) + ", not " + vtkApertureText::Quote(args[k]),
-      status, 2);
+    std::ostringstream range;
+    range << flag << " takes a number from " << low << " to " << high << ", not "
+          << vtkApertureText::Quote(args[k]);
+    return Fail(range.str(), status, 2);
   }
   return true;
 }
@@ -155,10 +159,12 @@ bool ParseValue(const std::vector<std::string>& args, size_t& k, Options& o, int
     o.MaximumDistance = 0.0;
     ++k;
   }
-  else if (a == "--max-distance" || a == "--vertical-scale")
+  else if (a == "--max-distance" || a == "--vertical-scale" || a == "--earth-radius")
   {
     ok = Number(args, k, 1e-9, 1e12, v, status);
-    (a == "--max-distance" ? o.MaximumDistance : o.VerticalScale) = v;
+    (a == "--max-distance"      ? o.MaximumDistance
+        : a == "--earth-radius" ? o.EarthRadius
+                                : o.VerticalScale) = v;
   }
   else if (a == "--nodata-as")
   {
@@ -241,6 +247,10 @@ bool Parse(int argc, const char* const* argv, Options& o, int& status)
       {
         return false;
       }
+    }
+    else if (a == "--earth-curvature")
+    {
+      o.EarthRadius = 6371000.0;
     }
     else if (a == "--compress" || a == "-q" || a == "--quiet" || a == "--horizons" || a == "--cog")
     {

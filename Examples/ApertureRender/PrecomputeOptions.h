@@ -41,6 +41,7 @@ struct Options
   std::string GrassHorizons;            // prefix of r.sun's horizon rasters; empty: none
   double SectorRotation = std::nan(""); // degrees; NaN: not given
   int NoDataAs = 0;                     // vtkAperturePrecompute's NoDataAs
+  double EarthRadius = 0.0;             // metres; 0: flat ground
 };
 
 // Parses the arguments (without the program's name). False when the program should stop: with

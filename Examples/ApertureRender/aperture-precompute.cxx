@@ -90,6 +90,7 @@ void Configure(vtkAperturePrecompute* filter, const Options& o, double convergen
   filter->SetComputePositiveOpenness(o.What.PositiveOpenness);
   filter->SetComputeNegativeOpenness(o.What.NegativeOpenness);
   filter->SetNoDataAs(o.NoDataAs);
+  filter->SetEarthRadius(o.EarthRadius);
   if (!o.GrassHorizons.empty()) // r.horizon's true directions 0, 360/D, ... as sector middles
   {
     filter->SetSectorRotation(convergence - 180.0 / o.Sectors);
@@ -160,8 +161,12 @@ void PrintSummary(const Options& o, vtkGDALDEMReader* reader, const int whole[6]
   const double* spacing = reader->GetOutput()->GetSpacing();
   std::cout << "Wrote " << vtkApertureText::QuoteName(o.Output) << ": " << whole[1] + 1 << " x "
             << whole[3] + 1 << " texels, " << o.Sectors << " sectors, spacing " << spacing[0]
-            << " x " << spacing[1] << " m (" << reader->GetGroundSpacingNote() << "), " << seconds
-            << " s\n";
+            << " x " << spacing[1] << " m (" << reader->GetGroundSpacingNote() << "), ";
+  if (o.EarthRadius > 0.0)
+  {
+    std::cout << "Earth radius " << o.EarthRadius / 1000.0 << " km, ";
+  }
+  std::cout << seconds << " s\n";
   if (!grass.empty())
   {
     std::cout << "Wrote " << grass.size() << " horizon rasters for r.sun, "

@@ -136,6 +136,24 @@ def main(plugin, data, work):
     else:
         check(False, "DEM: SkyViewFactor and PositiveOpenness computed")
 
+    # Flat ground on a sphere of 200 m falls away: seen from the middle, each sector's nearest
+    # sample, d = 10 m / max(|cos|, |sin|) away, lies d/2R below the horizontal.
+    level = os.path.join(work, "level.asc")
+    write_valley(level, n, 0.0)
+    curved = pvs.AperturePrecompute(Input=pvs.GDALDEMReader(FileName=level),
+                                    ComputePositiveOpenness=1, EarthRadius=200.0)
+    falling = point_array(curved, "PositiveOpenness")
+    if falling is not None:
+        steps = [10.0 / max(abs(math.cos(p)), abs(math.sin(p)))
+                 for p in ((k + 0.5) * math.pi / 16 for k in range(32))]
+        want = 90 + sum(math.degrees(math.atan(d / 400.0)) for d in steps) / 32
+        middle = falling.reshape(n, n)[n // 2, n // 2]
+        check(abs(middle - want) < 1e-3,
+              f"DEM: Earth Radius 200 m, flat ground's openness {middle:.4f} (closed form "
+              f"{want:.4f})")
+    else:
+        check(False, "DEM: PositiveOpenness with an Earth radius")
+
     # Limit Distance: off by default (every occluder counts); the distance it offers is a
     # quarter of the data's size, not 1e30; on, with a radius shorter than a texel (10 m), the
     # valley floor sees no wall.

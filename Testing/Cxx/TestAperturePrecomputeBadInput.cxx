@@ -148,6 +148,27 @@ void TestErrors()
       nanOffset.Observer->GetErrorMessage().find("RayOffset") != std::string::npos,
     "a NaN RayOffset is an error");
 
+  // An Earth radius that is negative, NaN or infinite: an error on a height field, which sweeps
+  // horizons over it, and with rays too.
+  vtkNew<vtkImageData> dem;
+  dem->SetDimensions(8, 8, 1);
+  dem->AllocateScalars(VTK_FLOAT, 1);
+  dem->GetPointData()->GetScalars()->Fill(0.0);
+  const auto mesh = Plane();
+  for (const double radius :
+    { -1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity() })
+  {
+    for (vtkDataObject* input :
+      { static_cast<vtkDataObject*>(dem), static_cast<vtkDataObject*>(mesh) })
+    {
+      Run earth(input);
+      earth.Filter->SetEarthRadius(radius);
+      Check(!earth.Update() &&
+          earth.Observer->GetErrorMessage().find("Earth radius") != std::string::npos,
+        "Earth radius " + std::to_string(radius) + ": an error");
+    }
+  }
+
   // Embree refuses a malformed device configuration.
   Run embree(Plane());
   embree.Filter->SetEmbreeConfiguration("threads=banana");
@@ -189,6 +210,13 @@ void TestWarnings()
       radius->GetTuple1(33) == 0.0 && axis[2] == 1.0,
     "NaN/Inf/vast points get a closed cap around +z");
   Check(rest, "the other points are right");
+
+  // An Earth radius on a mesh: rays over the mesh as it is, and a warning.
+  Run curved(Plane());
+  curved.Filter->SetEarthRadius(6371000.0);
+  Check(
+    curved.Update() && curved.Observer->GetWarningMessage().find("curvature") != std::string::npos,
+    "an Earth radius with rays: a warning");
 
   // Degenerate and zero-area triangles: ignored as occluders; points only they use are closed,
   // unless they lie where a vertex of the surface is (then they are that surface point).

@@ -63,7 +63,8 @@ struct Terrain
 
   float& At(vtkIdType i, vtkIdType j) { return this->Z[i + j * this->Nx]; }
 
-  vtkHorizonApertures::Grid Grid(int sectors, double maximumDistance = VTK_DOUBLE_MAX) const
+  vtkHorizonApertures::Grid Grid(
+    int sectors, double maximumDistance = VTK_DOUBLE_MAX, double earthRadius = 0.0) const
   {
     vtkHorizonApertures::Grid g;
     g.Heights = this->Z.data();
@@ -74,6 +75,7 @@ struct Terrain
     g.Dy = this->Dy;
     g.Sectors = sectors;
     g.MaximumDistance = maximumDistance;
+    g.EarthRadius = earthRadius;
     return g;
   }
 };
@@ -419,13 +421,13 @@ Terrain Crop(const Terrain& t, vtkIdType x0, vtkIdType y0, vtkIdType nx, vtkIdTy
 }
 
 // One tile of 64 × 64 at (tx, ty) computed from itself and its halo; `anchored`: with Origin.
-vtkHorizonApertures::Apertures Tile(
-  const Terrain& t, double radius, vtkIdType tx, vtkIdType ty, vtkIdType halo, bool anchored)
+vtkHorizonApertures::Apertures Tile(const Terrain& t, double radius, vtkIdType tx, vtkIdType ty,
+  vtkIdType halo, bool anchored, double earthRadius)
 {
   const vtkIdType x0 = std::max<vtkIdType>(0, tx - halo), y0 = std::max<vtkIdType>(0, ty - halo);
   const vtkIdType x1 = std::min(t.Nx, tx + 64 + halo), y1 = std::min(t.Ny, ty + 64 + halo);
   const Terrain c = Crop(t, x0, y0, x1 - x0, y1 - y0);
-  vtkHorizonApertures::Grid g = c.Grid(16, radius);
+  vtkHorizonApertures::Grid g = c.Grid(16, radius, earthRadius);
   g.Origin[0] = anchored ? x0 : 0;
   g.Origin[1] = anchored ? y0 : 0;
   const vtkIdType extent[4] = { tx - x0, std::min(tx + 64, t.Nx) - 1 - x0, ty - y0,
@@ -434,24 +436,28 @@ vtkHorizonApertures::Apertures Tile(
   return Run(g);
 }
 
-// 6. Tiles of 64 × 64 with a halo of ceil(MaximumDistance / spacing) + 2 texels.
-void TestTiles()
+// 6. Tiles of 64 × 64 with a halo of ceil(MaximumDistance / spacing) + 2 texels, on flat or
+// curved ground (the curvature's heights and slopes depend on where a sample is in the DEM).
+void TestTiles(double earthRadius)
 {
   const Terrain t = RoughWithHole();
   const double radius = 20.0;
-  const auto whole = Run(t.Grid(16, radius));
+  const auto whole = Run(t.Grid(16, radius, earthRadius));
   const vtkIdType halo = static_cast<vtkIdType>(std::ceil(radius / std::min(t.Dx, t.Dy))) + 2;
   double worst = 0.0;
   for (vtkIdType ty = 0; ty < t.Ny; ty += 64)
   {
     for (vtkIdType tx = 0; tx < t.Nx; tx += 64)
     {
-      worst = std::max(worst, Difference(whole, Tile(t, radius, tx, ty, halo, true), tx, ty));
+      worst = std::max(
+        worst, Difference(whole, Tile(t, radius, tx, ty, halo, true, earthRadius), tx, ty));
     }
   }
-  const double unanchored = Difference(whole, Tile(t, radius, 128, 128, halo, false), 128, 128);
-  std::cout << "tiles 64 x 64, halo " << halo << ": largest difference from the whole grid "
-            << worst << " (a tile without its Origin: " << unanchored << ")\n";
+  const double unanchored =
+    Difference(whole, Tile(t, radius, 128, 128, halo, false, earthRadius), 128, 128);
+  std::cout << "tiles 64 x 64, halo " << halo << ", Earth radius " << earthRadius
+            << ": largest difference from the whole grid " << worst
+            << " (a tile without its Origin: " << unanchored << ")\n";
   Check(worst <= 1e-6, "tiled == untiled", worst, 0.0);
 }
 
@@ -614,8 +620,11 @@ struct Direction
 bool HeightAt(const Terrain& t, const Direction& d, vtkIdType m, double y, double& z)
 {
   const vtkIdType minor = d.Major == 0 ? t.Ny : t.Nx, major = d.Major == 0 ? t.Nx : t.Ny;
-  const vtkIdType j0 = static_cast<vtkIdType>(std::floor(y));
-  const double w = y - j0;
+  // On a texel up to rounding (1e-9), as vtkHorizonApertures takes it: that texel alone.
+  const double nearest = std::floor(y + 0.5);
+  const bool onTexel = std::abs(y - nearest) < 1e-9;
+  const vtkIdType j0 = static_cast<vtkIdType>(onTexel ? nearest : std::floor(y));
+  const double w = onTexel ? 0.0 : y - j0;
   auto texel = [&](vtkIdType n) { return d.Major == 0 ? m + n * t.Nx : n + m * t.Nx; };
   auto usable = [&](vtkIdType n)
   {
@@ -632,13 +641,15 @@ bool HeightAt(const Terrain& t, const Direction& d, vtkIdType m, double y, doubl
 
 // The steepest slope from texel (i, j) over the samples of its ray within the radius, marched
 // one by one: from its nearest line sample, as vtkHorizonApertures samples, or (`fromTexel`)
-// from the texel itself along a line through it.
+// from the texel itself along a line through it; on a sphere of `earthRadius` (0: flat), a
+// sample at distance s lies s²/2R lower.
 double MarchedSlope(const Terrain& t, const Direction& d, const vtkIdType origin[2], vtkIdType i,
-  vtkIdType j, const float* normal, double radius, bool fromTexel)
+  vtkIdType j, const float* normal, double radius, bool fromTexel, double earthRadius)
 {
   const vtkIdType major = d.Major == 0 ? i : j, minor = d.Major == 0 ? j : i;
   const double x = double(major + origin[d.Major]) * d.Tau;
-  const double offset = fromTexel ? 0.0 : x - std::floor(x + 0.5);
+  const double offset =
+    fromTexel || std::abs(x - std::floor(x + 0.5)) < 1e-9 ? 0.0 : x - std::floor(x + 0.5);
   double zr;
   if (!HeightAt(t, d, major, minor + offset, zr)) // the texel's tangent plane
   {
@@ -656,16 +667,17 @@ double MarchedSlope(const Terrain& t, const Direction& d, const vtkIdType origin
     double z;
     if (HeightAt(t, d, at, minor + offset + double(m * d.Step) * d.Tau, z))
     {
-      best = std::max(best, (z - zr) / (double(m) * d.Delta));
+      const double s = double(m) * d.Delta;
+      best = std::max(best, (z - zr - (earthRadius > 0.0 ? s * s / (2.0 * earthRadius) : 0.0)) / s);
     }
   }
   return best;
 }
 
 // 9. The hulls against marching: horizons per sector and A per texel, on rough terrain with
-// texel noise of the given amplitude besides.
-void TestAgainstMarching(
-  double dx, double dy, double radius, vtkIdType ox, vtkIdType oy, int sectors, double noise)
+// texel noise of the given amplitude besides, on flat or curved ground.
+void TestAgainstMarching(double dx, double dy, double radius, vtkIdType ox, vtkIdType oy,
+  int sectors, double noise, double earthRadius = 0.0)
 {
   Terrain t = Rough(64, 64, dx, dy);
   for (vtkIdType k = 0; k < 64 * 64; ++k)
@@ -674,7 +686,7 @@ void TestAgainstMarching(
   }
   t.Valid.assign(t.Z.size(), 1);
   std::fill(t.Valid.begin() + 30 * 64 + 20, t.Valid.begin() + 30 * 64 + 24, 0);
-  vtkHorizonApertures::Grid g = t.Grid(sectors, radius);
+  vtkHorizonApertures::Grid g = t.Grid(sectors, radius, earthRadius);
   g.Origin[0] = ox;
   g.Origin[1] = oy;
   const auto out = Run(g);
@@ -695,8 +707,10 @@ void TestAgainstMarching(
       }
       const float* n = &out.Normals[3 * o];
       const double tangent = std::atan(-(n[0] * d.Cos + n[1] * d.Sin) / n[2]);
-      const double h = std::atan(MarchedSlope(t, d, g.Origin, o % 64, o / 64, n, radius, false));
-      const double h2 = std::atan(MarchedSlope(t, d, g.Origin, o % 64, o / 64, n, radius, true));
+      const double h =
+        std::atan(MarchedSlope(t, d, g.Origin, o % 64, o / 64, n, radius, false, earthRadius));
+      const double h2 =
+        std::atan(MarchedSlope(t, d, g.Origin, o % 64, o / 64, n, radius, true, earthRadius));
       worstH = std::max(worstH, std::abs(h - horizons[o]));
       reference[o] += 2.0 * Pi / g.Sectors * (1.0 - std::sin(std::max(h, tangent)));
       throughTexel[o] += 2.0 * Pi / g.Sectors * (1.0 - std::sin(std::max(h2, tangent)));
@@ -713,8 +727,8 @@ void TestAgainstMarching(
     }
   }
   std::cout << "64 x 64 against marching (Dx " << dx << ", Dy " << dy << ", MaximumDistance "
-            << radius << ", D = " << sectors << ", noise " << noise << "): horizons within "
-            << worstH << " rad, A within " << worstA
+            << radius << ", D = " << sectors << ", noise " << noise << ", Earth radius "
+            << earthRadius << "): horizons within " << worstH << " rad, A within " << worstA
             << "; rays through the texels instead of their nearest line samples: A within "
             << worstTexel << " (mean " << meanTexel << ")\n";
   Check(worstH <= 1e-5, "horizons against marching", worstH, 0.0);
@@ -816,7 +830,8 @@ int TestHorizonApertures(int, char*[])
   TestPlanes();
   TestWall();
   TestValleyAndPit();
-  TestTiles();
+  TestTiles(0.0);
+  TestTiles(150.0);
   TestNoData();
   TestDeterminism();
   TestWithoutNormals();
@@ -824,6 +839,9 @@ int TestHorizonApertures(int, char*[])
   TestAgainstMarching(1.0, 0.8, VTK_DOUBLE_MAX, 0, 0, 16, 4.0);
   TestAgainstMarching(1.3, 1.0, 7.5, 1000, 20, 15, 4.0);
   TestAgainstMarching(1.0, 1.0, VTK_DOUBLE_MAX, 0, 0, 16, 0.0);
+  // A sphere so small that the ground falls 13 units over the grid: beside the hills' heights.
+  TestAgainstMarching(1.0, 0.8, VTK_DOUBLE_MAX, 500, -40, 16, 4.0, 150.0);
+  TestAgainstMarching(1.3, 1.0, 7.5, 1000, 20, 15, 4.0, 150.0);
   TestKeptHorizons();
   TestFailures();
   TestSpeed();

@@ -22,6 +22,9 @@
 // - a wall of height H at distance d, h = atan(H cos φ / d) toward it where the ray meets it
 //   within the grid, held per sector (the grid's edges cut sectors): SVF, and the horizon of
 //   the sector turned onto the wall's normal (SectorRotation) equal to atan(H / d);
+// - on a curved Earth of radius R, a sample d away lies d²/2R lower: flat ground's horizon is
+//   its nearest sample's, atan(−Δ/2R), its lowest elevation the farthest sample's, and the
+//   wall's horizon atan((H − d²/2R)/d);
 // - tolerances: 0.5% for the sky-view factors, 0.2° for openness and horizons;
 // - edges see fewer sectors (openness over those with samples); no-data texels are NaN; a tile
 //   with its halo gives the whole grid's products;
@@ -262,6 +265,56 @@ void TestWall()
     "wall: the sector turned onto its normal sees atan(H / d)", h0, want);
 }
 
+// A sphere so small (R = 2000 texels) that its curvature shows on the grid.
+void TestCurvedEarth()
+{
+  const double radius = 2000.0;
+  // Flat ground, 8 sectors on the axes (steps of 1) and diagonals (√2), 64 steps to the edge.
+  const Terrain ground(129, [](double, double) { return 0.0; });
+  vtkHorizonApertures::Grid flat = MakeGrid(ground, 8, -Pi / 8);
+  flat.EarthRadius = radius;
+  Products p;
+  Compute(flat, p);
+  const vtkIdType c = p.Nx / 2;
+  double positive = 0.0, negative = 0.0, worst = 0.0;
+  for (int k = 0; k < 8; ++k)
+  {
+    const double step = k % 2 ? std::sqrt(2.0) : 1.0, h = std::atan(-step / (2.0 * radius));
+    worst = std::max(worst, std::abs(p.Horizons[8 * (c + c * p.Nx) + k] - h));
+    positive += (90.0 - vtkMath::DegreesFromRadians(h)) / 8.0;
+    negative +=
+      (90.0 + vtkMath::DegreesFromRadians(std::atan(-64.0 * step / (2.0 * radius)))) / 8.0;
+  }
+  Check(worst < 1e-7, "curved flat ground: each horizon is its nearest sample's", worst, 0.0);
+  Check(std::abs(p.At(p.Positive, c, c) - positive) < 1e-4, "curved flat ground: positive openness",
+    p.At(p.Positive, c, c), positive);
+  Check(std::abs(p.At(p.Negative, c, c) - negative) < 1e-4,
+    "curved flat ground: negative openness, from the farthest samples", p.At(p.Negative, c, c),
+    negative);
+  Check(p.At(p.Svf, c, c) == 1.0f, "curved flat ground: the whole sky", p.At(p.Svf, c, c), 1.0);
+  // Far from the DEM's origin (a tile's Origin), where each sample lies lower by more: the same
+  // (opposite sectors' errors would cancel in the openness' mean near the origin).
+  flat.Origin[0] = 3000;
+  flat.Origin[1] = 1000;
+  Products far;
+  Compute(flat, far);
+  Check(std::abs(far.At(far.Negative, c, c) - negative) < 1e-4 &&
+      std::abs(far.At(far.Positive, c, c) - positive) < 1e-4,
+    "curved flat ground far from the origin: the same openness", far.At(far.Negative, c, c),
+    negative);
+
+  const double height = 40.0, distance = 60.0;
+  const Terrain cliff(257, [&](double x, double) { return x >= distance ? height : 0.0; });
+  vtkHorizonApertures::Grid wall = MakeGrid(cliff, 32, -Pi / 32);
+  wall.EarthRadius = radius;
+  Compute(wall, p);
+  const vtkIdType w = p.Nx / 2;
+  const double h0 = p.Horizons[32 * (w + w * p.Nx)];
+  const double want = std::atan((height - distance * distance / (2.0 * radius)) / distance);
+  Check(
+    std::abs(h0 - want) < 1e-6, "curved Earth: a wall at d sees atan((H - d^2/2R)/d)", h0, want);
+}
+
 void TestNoDataAndTiles()
 {
   Terrain hills(
@@ -404,6 +457,7 @@ int TestTerrainProducts(int, char*[])
   TestPlanes();
   TestValleyAndCones();
   TestWall();
+  TestCurvedEarth();
   TestNoDataAndTiles();
   TestNoDataTreatments();
   return vtkApertureTest::Result();

@@ -125,8 +125,9 @@ def compare(binary, data, work, side, checks):
     t_ours8 = run(binary, dem, "-o", ours8, "-q", "--sectors", 8, "--sector-rotation", -22.5,
                   "--outputs", "svf,svf-cosine,horizons")
     grass_file = os.path.join(work, "ours8-grass-%d.tif" % side)
+    # r.horizon and r.sun count the Earth's curvature: so do ours, like for like.
     run(binary, dem, "-o", grass_file, "-q", "--sectors", 8, "--outputs", "horizons",
-        "--grass-horizons", hz)
+        "--grass-horizons", hz, "--earth-curvature")
     t_ours32 = run(binary, dem, "-o", os.path.join(work, "ours32-%d.tif" % side), "-q")
     visible, svf = (os.path.join(work, "saga-%s-%d.sdat" % (n, side)) for n in ("vis", "svf"))
     t_saga = run("saga_cmd", "-f=q", "ta_lighting", "3", "-DEM", dem, "-VISIBLE", visible,

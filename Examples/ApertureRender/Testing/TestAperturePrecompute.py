@@ -126,6 +126,25 @@ if horizons:
               for b in horizons["bands"][5:]),  # gdalinfo prints 3 decimals
           "--horizons: angles within [-pi/2, pi/2]")
 
+# --earth-curvature: every sector's horizon lower (15 km of ground: up to 18 m of fall), the
+# summary says so; --earth-radius of the same value gives the same file.
+result = run(dem, "-o", path("curved.tif"), "--sectors", "16", "--horizons",
+             "--earth-curvature")
+curved = gdalinfo(path("curved.tif"), "-stats", "-checksum")
+check(result.returncode == 0 and curved is not None and "Earth radius 6371 km" in result.stdout,
+      "--earth-curvature: exit 0, in the summary: " + result.stdout.strip())
+if curved and horizons:
+    def mean(band):  # the metadata's, in full (the JSON's "mean" has 3 decimals)
+        return float(band["metadata"][""]["STATISTICS_MEAN"])
+    lower = [mean(c) < mean(f) for c, f in zip(curved["bands"][5:], horizons["bands"][5:])]
+    check(all(lower), f"--earth-curvature: every horizon band's mean lower {lower}")
+result = run(dem, "-o", path("radius.tif"), "--sectors", "16", "--horizons", "--quiet",
+             "--earth-radius", "6371000")
+radius = gdalinfo(path("radius.tif"), "-checksum")
+check(radius is not None and curved is not None and
+      [b.get("checksum") for b in radius["bands"]] == [b.get("checksum") for b in curved["bands"]],
+      "--earth-radius 6371000 == --earth-curvature")
+
 # --outputs: the terrain products, in a fixed order, each with its unit; the apertures only when
 # named; NaN at no-data; values in their ranges.
 result = run(dem, "-o", path("products.tif"), "--sectors", "16", "--quiet",
@@ -224,6 +243,9 @@ cases = [
     ([dem, "-o", path("x.tif"), "--outputs", ""], 2),
     ([dem, "-o", path("x.tif"), "--nodata-as", "lake"], 2),
     ([dem, "-o", path("x.tif"), "--nodata-as"], 2),
+    ([dem, "-o", path("x.tif"), "--earth-radius", "-6371000"], 2),
+    ([dem, "-o", path("x.tif"), "--earth-radius", "nan"], 2),
+    ([dem, "-o", path("x.tif"), "--earth-radius"], 2),
     ([dem, "-o", path("x.tif"), "--grass-horizons", path("g"), "--sectors", "7"], 2),
     ([dem, "-o", path("x.tif"), "--grass-horizons", path("g"), "--sector-rotation", "3"], 2),
     ([dem, "-o", path("x.tif"), "--grass-horizons", path("no-such-folder/g")], 1),
