@@ -455,7 +455,16 @@ double Tangent(const Viewpoint& view, vtkIdType n, Chain chain)
   return view.Slope(chain(low));
 }
 
-// Per-thread buffers: a group's samples (line-major), and the hulls of one line.
+// The distance between two lines' samples in a group's buffers of n samples a line: a whole
+// number of cache lines, an odd one, so that a group's lines fall in different sets of the
+// cache as Gather() and Scatter() go across them (at a power of two, they all fell in one).
+vtkIdType Stride(vtkIdType n)
+{
+  const vtkIdType lines = (n + 7) / 8;
+  return 8 * (lines % 2 == 1 ? lines : lines + 1);
+}
+
+// Per-thread buffers: a group's samples (line-major, Stride() apart), and the hulls of one line.
 struct Scratch
 {
   std::vector<double> Occluder; // interpolated height; NaN: does not occlude
@@ -484,15 +493,15 @@ struct Scratch
     }
     for (auto* v : { &this->Occluder, &this->Receiver, &this->Tangent, &this->Slope[0] })
     {
-      v->resize(lines * length);
+      v->resize(lines * Stride(length));
     }
     for (auto& v : this->Deficit)
     {
-      v.resize(lines * length);
+      v.resize(lines * Stride(length));
     }
-    this->Slope[1].resize(sectors == 2 ? lines * length : 0);
-    this->Slope[2].resize(lower ? lines * length : 0);
-    this->Slope[3].resize(lower && sectors == 2 ? lines * length : 0);
+    this->Slope[1].resize(sectors == 2 ? lines * Stride(length) : 0);
+    this->Slope[2].resize(lower ? lines * Stride(length) : 0);
+    this->Slope[3].resize(lower && sectors == 2 ? lines * Stride(length) : 0);
     this->Hull.resize(length);
     for (auto* v : { &this->Suffix, &this->Overwritten })
     {
@@ -774,7 +783,7 @@ void Group::Gather(Scratch& s) const
     const double drop = 0.5 * l.Curvature * this->Position(k) * this->Position(k);
     for (vtkIdType c = this->First; c < this->Last; ++c)
     {
-      const vtkIdType minor = c + l.Nearest[m], at = (c - this->First) * n + k;
+      const vtkIdType minor = c + l.Nearest[m], at = (c - this->First) * Stride(n) + k;
       s.Occluder[at] = s.Receiver[at] = NotThere;
       const vtkIdType t = m * l.MajorStride + minor * l.MinorStride;
       if (minor < 0 || minor >= l.NMinor || !this->F.IsValid(t))
@@ -811,7 +820,7 @@ void Group::Scatter(const Scratch& s, const Sink& sink) const
     const vtkIdType m = this->MajorAt(k);
     for (vtkIdType c = this->First; c < this->Last; ++c)
     {
-      const vtkIdType at = (c - this->First) * n + k;
+      const vtkIdType at = (c - this->First) * Stride(n) + k;
       if (!std::isnan(s.Receiver[at]))
       {
         vtkIdType i, j;
@@ -840,19 +849,20 @@ void Uncurve(const Group& group, double curvature, double toward, double* slopes
 void SweepGroup(Scratch& s, LineSweep& sweep, const Lines& lines, const Group& group, bool lower)
 {
   const vtkIdType n = group.GetLength();
-  for (vtkIdType c = 0; c < group.GetNumberOfLines(); ++c)
+  for (vtkIdType line = 0; line < group.GetNumberOfLines(); ++line)
   {
-    double* z = &s.Occluder[c * n];
-    double* zr = &s.Receiver[c * n];
+    const vtkIdType c = line * Stride(n); // the line's first sample in the buffers
+    double* z = &s.Occluder[c];
+    double* zr = &s.Receiver[c];
     for (int k = 0; k < lines.Count; ++k) // the opposite sector sweeps the other way
     {
-      sweep.Run(z, zr, &s.Slope[k][c * n], n, k == 1);
+      sweep.Run(z, zr, &s.Slope[k][c], n, k == 1);
       if (lines.Curvature > 0.0) // Sectors[0] looks toward the major axis' Step
       {
-        Uncurve(group, lines.Curvature, k == 0 ? lines.Step : -lines.Step, &s.Slope[k][c * n], n);
+        Uncurve(group, lines.Curvature, k == 0 ? lines.Step : -lines.Step, &s.Slope[k][c], n);
       }
     }
-    (lines.Count == 2 ? AddDeficits<2> : AddDeficits<1>)(lines, s, c * n, n);
+    (lines.Count == 2 ? AddDeficits<2> : AddDeficits<1>)(lines, s, c, n);
     if (!lower)
     {
       continue;
@@ -861,11 +871,10 @@ void SweepGroup(Scratch& s, LineSweep& sweep, const Lines& lines, const Group& g
     std::transform(zr, zr + n, zr, std::negate<double>());
     for (int k = 0; k < lines.Count; ++k)
     {
-      sweep.Run(z, zr, &s.Slope[2 + k][c * n], n, k == 1);
+      sweep.Run(z, zr, &s.Slope[2 + k][c], n, k == 1);
       if (lines.Curvature > 0.0)
       {
-        Uncurve(
-          group, lines.Curvature, k == 0 ? -lines.Step : lines.Step, &s.Slope[2 + k][c * n], n);
+        Uncurve(group, lines.Curvature, k == 0 ? -lines.Step : lines.Step, &s.Slope[2 + k][c], n);
       }
     }
   }
