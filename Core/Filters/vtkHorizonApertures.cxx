@@ -776,6 +776,7 @@ void Group::Gather(Scratch& s) const
 {
   const Lines& l = this->L;
   const vtkIdType n = this->Length;
+  const vtkIdType stride = Stride(n);
   for (vtkIdType k = 0; k < n; ++k)
   {
     const vtkIdType m = this->MajorAt(k);
@@ -783,7 +784,7 @@ void Group::Gather(Scratch& s) const
     const double drop = 0.5 * l.Curvature * this->Position(k) * this->Position(k);
     for (vtkIdType c = this->First; c < this->Last; ++c)
     {
-      const vtkIdType minor = c + l.Nearest[m], at = (c - this->First) * Stride(n) + k;
+      const vtkIdType minor = c + l.Nearest[m], at = (c - this->First) * stride + k;
       s.Occluder[at] = s.Receiver[at] = NotThere;
       const vtkIdType t = m * l.MajorStride + minor * l.MinorStride;
       if (minor < 0 || minor >= l.NMinor || !this->F.IsValid(t))
@@ -815,12 +816,13 @@ void Group::Scatter(const Scratch& s, const Sink& sink) const
   const Lines& l = this->L;
   const vtkIdType n = this->Length;
   const double perStep = 1.0 / l.Delta;
+  const vtkIdType stride = Stride(n);
   for (vtkIdType k = 0; k < n; ++k)
   {
     const vtkIdType m = this->MajorAt(k);
     for (vtkIdType c = this->First; c < this->Last; ++c)
     {
-      const vtkIdType at = (c - this->First) * Stride(n) + k;
+      const vtkIdType at = (c - this->First) * stride + k;
       if (!std::isnan(s.Receiver[at]))
       {
         vtkIdType i, j;
