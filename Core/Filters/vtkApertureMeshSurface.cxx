@@ -11,11 +11,13 @@
 #include "vtkApertureMeshSurface.h"
 
 #include "vtkApertureCellCheck.h"
+#include "vtkApertureMemory.h"
 #include "vtkApertureSMP.h"
 #include "vtkApertureSurface.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
+#include "vtkDataArrayRange.h"
 #include "vtkFloatArray.h"
 #include "vtkMath.h"
 #include "vtkPointData.h"
@@ -97,6 +99,19 @@ constexpr vtkIdType WaveBlocks = 16;
 // The steps of Set(), with what they share.
 namespace
 {
+// Sets on[i] for every point id i of a vtkCellArray's connectivity (vtkCellArray::Visit()).
+struct MarkPoints
+{
+  template <typename State>
+  void operator()(State& state, std::vector<unsigned char>& on) const
+  {
+    for (const auto id : vtk::DataArrayValueRange<1>(state.GetConnectivity()))
+    {
+      on[static_cast<size_t>(id)] = 1;
+    }
+  }
+};
+
 struct Build
 {
   vtkApertureSurface& S;
@@ -138,8 +153,10 @@ struct Build
 
   void Weld();
   void Triangulate();
-  void AddCellTriangles(vtkIdType npts, const vtkIdType* ids, bool strip,
-    std::vector<vtkIdType>& local, vtkIdType cell);
+  void MarkOnSurface(vtkCellArray* const arrays[2]);
+  void CutCells(vtkCellArray* const arrays[2], const std::vector<vtkIdType>& first, vtkIdType begin,
+    vtkIdType end, std::atomic<bool>& dropped);
+  void DropNotFinite();
   void SelectGeometry();
   vtkIdType Neighbour(vtkIdType corner, int step) const;
   void Orient();
@@ -174,8 +191,9 @@ void Build::Weld()
 {
   std::vector<double> world; // input points, 3 each
   vtkApertureSurface::WorldPoints(this->Input->GetPoints(), world);
-  this->Finite.assign(this->N, 0);
+  vtkApertureMemory::Assign(this->Finite, this->N);
   std::vector<vtkIdType> order;
+  vtkApertureMemory::Reserve(order, this->N);
   for (vtkIdType i = 0; i < this->N; ++i)
   {
     this->Finite[i] = vtkApertureSurface::IsUsable(&world[3 * i]);
@@ -192,7 +210,8 @@ void Build::Weld()
       const double* q = w + 3 * b;
       return std::make_tuple(p[0], p[1], p[2], a) < std::make_tuple(q[0], q[1], q[2], b);
     });
-  std::vector<vtkIdType> first(this->N, -1);
+  std::vector<vtkIdType> first;
+  vtkApertureMemory::Assign(first, this->N, vtkIdType(-1));
   for (size_t k = 0; k < order.size(); ++k)
   {
     const bool same = k > 0 && w[3 * order[k]] == w[3 * order[k - 1]] &&
@@ -200,7 +219,7 @@ void Build::Weld()
       w[3 * order[k] + 2] == w[3 * order[k - 1] + 2];
     first[order[k]] = same ? first[order[k - 1]] : order[k];
   }
-  this->VertexOf.assign(this->N, vtkApertureSurface::NoVertex);
+  vtkApertureMemory::Assign(this->VertexOf, this->N, vtkApertureSurface::NoVertex);
   for (vtkIdType i = 0; i < this->N; ++i)
   {
     if (this->Finite[i] && first[i] == i)
@@ -217,7 +236,7 @@ void Build::Weld()
     }
   }
   const vtkIdType vertices = static_cast<vtkIdType>(this->VertexInput.size());
-  this->S.Vertices.assign(3 * vertices + 1, 0.0f);
+  vtkApertureMemory::Assign(this->S.Vertices, 3 * vertices + 1);
   for (vtkIdType v = 0; v < vertices; ++v)
   {
     for (int k = 0; k < 3; ++k)
@@ -229,55 +248,114 @@ void Build::Weld()
 }
 
 //------------------------------------------------------------------------------
-// Every polygon and strip as triangles of input points, remembering their cell and corners.
+// Every polygon and strip as triangles of input points, remembering their cell and corners. A
+// cell of n corners makes n - 2 triangles (none below 3): counted first, the cells are then cut
+// on every core, each into its own slots, and the triangles with a corner that is not finite
+// are dropped afterwards.
 void Build::Triangulate()
 {
-  this->OnSurface.assign(this->N, 0);
-  // A cell of n corners makes at most n - 2 triangles: sized once, the triangles' arrays are
-  // never copied to grow (on a large surface they are the largest part of the intake).
-  vtkCellArray* polys = this->Input->GetPolys();
-  vtkCellArray* strips = this->Input->GetStrips();
-  const vtkIdType bound = std::max<vtkIdType>(0,
-    polys->GetNumberOfConnectivityIds() + strips->GetNumberOfConnectivityIds() -
-      2 * (polys->GetNumberOfCells() + strips->GetNumberOfCells()));
-  this->TriInput.reserve(3 * bound);
-  this->TriCorner.reserve(3 * bound);
-  this->TriCell.reserve(bound);
-  std::vector<vtkIdType> local;
-  vtkIdType cell = 0;
-  this->Polygons = this->Input->GetNumberOfPolys();
-  vtkApertureMeshSurface::ForEachPolygonOrStrip(this->Input,
-    [&](vtkIdType npts, const vtkIdType* ids, bool strip)
+  vtkCellArray* const arrays[2] = { this->Input->GetPolys(), this->Input->GetStrips() };
+  this->Polygons = arrays[0]->GetNumberOfCells();
+  const vtkIdType cells = this->Polygons + arrays[1]->GetNumberOfCells();
+  this->MarkOnSurface(arrays);
+  std::vector<vtkIdType> first; // each cell's first triangle
+  vtkApertureMemory::Assign(first, cells + 1);
+  vtkApertureSMP::For(0, cells, 4096,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      this->AddCellTriangles(npts, ids, strip, local, cell++);
-      this->Corners += npts;
+      for (vtkIdType g = begin; g < end; ++g)
+      {
+        const vtkIdType npts = g < this->Polygons ? arrays[0]->GetCellSize(g)
+                                                  : arrays[1]->GetCellSize(g - this->Polygons);
+        first[g + 1] = std::max<vtkIdType>(0, npts - 2);
+      }
     });
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  this->Corners = arrays[0]->GetNumberOfConnectivityIds() + arrays[1]->GetNumberOfConnectivityIds();
+  vtkApertureMemory::Assign(this->TriInput, 3 * first.back());
+  vtkApertureMemory::Assign(this->TriCorner, 3 * first.back());
+  vtkApertureMemory::Assign(this->TriCell, first.back());
+  std::atomic<bool> dropped(false);
+  vtkApertureSMP::For(0, cells, 1024,
+    [&](vtkIdType begin, vtkIdType end) { this->CutCells(arrays, first, begin, end, dropped); });
+  if (dropped)
+  {
+    this->DropNotFinite();
+  }
 }
 
 //------------------------------------------------------------------------------
-void Build::AddCellTriangles(
-  vtkIdType npts, const vtkIdType* ids, bool strip, std::vector<vtkIdType>& local, vtkIdType cell)
+// The input points that a polygon or strip names.
+void Build::MarkOnSurface(vtkCellArray* const arrays[2])
 {
-  for (vtkIdType k = 0; k < npts; ++k)
+  vtkApertureMemory::Assign(this->OnSurface, this->N);
+  arrays[0]->Visit(MarkPoints{}, this->OnSurface);
+  arrays[1]->Visit(MarkPoints{}, this->OnSurface);
+}
+
+//------------------------------------------------------------------------------
+// Cells [begin, end) of the polygons, then strips, as triangles in their slots from first[g]
+// on (vtkApertureMeshSurface::Triangulate() makes exactly as many as counted); a triangle with
+// a corner that is not finite gets the cell NoVertex, to be dropped.
+void Build::CutCells(vtkCellArray* const arrays[2], const std::vector<vtkIdType>& first,
+  vtkIdType begin, vtkIdType end, std::atomic<bool>& dropped)
+{
+  const vtkIdType polygonCorners = arrays[0]->GetNumberOfConnectivityIds();
+  const vtkSmartPointer<vtkCellArrayIterator> cells[2] = {
+    vtk::TakeSmartPointer(arrays[0]->NewIterator()), vtk::TakeSmartPointer(arrays[1]->NewIterator())
+  };
+  std::vector<vtkIdType> local;
+  bool allFinite = true;
+  for (vtkIdType g = begin; g < end; ++g)
   {
-    this->OnSurface[ids[k]] = 1;
-  }
-  local.clear();
-  vtkApertureMeshSurface::Triangulate(
-    npts, ids, strip, this->Input->GetPoints(), this->Finite.data(), local);
-  for (size_t t = 0; t < local.size(); t += 3)
-  {
-    const vtkIdType* k = &local[t];
-    if (this->Finite[ids[k[0]]] && this->Finite[ids[k[1]]] && this->Finite[ids[k[2]]])
+    const int strip = g < this->Polygons ? 0 : 1;
+    const vtkIdType c = g - strip * this->Polygons;
+    vtkIdType npts;
+    const vtkIdType* ids;
+    cells[strip]->GetCellAtId(c, npts, ids);
+    const vtkIdType corner = strip * polygonCorners +
+      static_cast<vtkIdType>(arrays[strip]->GetOffsetsArray()->GetComponent(c, 0));
+    local.clear();
+    vtkApertureMeshSurface::Triangulate(
+      npts, ids, strip == 1, this->Input->GetPoints(), this->Finite.data(), local);
+    for (vtkIdType t = 0, slot = first[g]; t < first[g + 1] - first[g]; ++t, ++slot)
     {
-      for (int c = 0; c < 3; ++c)
+      bool finite = true;
+      for (int k = 0; k < 3; ++k)
       {
-        this->TriInput.push_back(ids[k[c]]);
-        this->TriCorner.push_back(this->Corners + k[c]);
+        const vtkIdType at = local[3 * t + k];
+        this->TriInput[3 * slot + k] = static_cast<std::uint32_t>(ids[at]);
+        this->TriCorner[3 * slot + k] = static_cast<std::uint32_t>(corner + at);
+        finite = finite && this->Finite[ids[at]];
       }
-      this->TriCell.push_back(cell);
+      this->TriCell[slot] = finite ? static_cast<std::uint32_t>(g) : vtkApertureSurface::NoVertex;
+      allFinite = allFinite && finite;
     }
   }
+  if (!allFinite)
+  {
+    dropped = true;
+  }
+}
+
+//------------------------------------------------------------------------------
+// The triangles CutCells() marked dropped removed, the others kept in order.
+void Build::DropNotFinite()
+{
+  size_t kept = 0;
+  for (size_t t = 0; t < this->TriCell.size(); ++t)
+  {
+    if (this->TriCell[t] == vtkApertureSurface::NoVertex)
+    {
+      continue;
+    }
+    std::copy_n(&this->TriInput[3 * t], 3, &this->TriInput[3 * kept]);
+    std::copy_n(&this->TriCorner[3 * t], 3, &this->TriCorner[3 * kept]);
+    this->TriCell[kept++] = this->TriCell[t];
+  }
+  this->TriInput.resize(3 * kept);
+  this->TriCorner.resize(3 * kept);
+  this->TriCell.resize(kept);
 }
 
 //------------------------------------------------------------------------------
@@ -328,7 +406,7 @@ void vtkApertureMeshSurface::Triangulate(vtkIdType npts, const vtkIdType* ids, b
 void Build::SelectGeometry()
 {
   const vtkIdType triangles = static_cast<vtkIdType>(this->TriCell.size());
-  this->Geometry.reserve(triangles);
+  vtkApertureMemory::Reserve(this->Geometry, triangles);
   for (vtkIdType t = 0; t < triangles; ++t)
   {
     const vtkIdType a = this->Vertex(t, 0), b = this->Vertex(t, 1), c = this->Vertex(t, 2);
@@ -500,7 +578,7 @@ void Build::FacesAround(const std::uint32_t* corners, int m, Sides& sides) const
 void Build::FindIncident()
 {
   const vtkIdType vertices = static_cast<vtkIdType>(this->VertexInput.size());
-  this->IncidentStart.assign(vertices + 1, 0);
+  vtkApertureMemory::Assign(this->IncidentStart, vertices + 1);
   for (size_t g = 0; g < this->Geometry.size(); ++g)
   {
     for (int k = 0; k < 3; ++k)
@@ -510,7 +588,7 @@ void Build::FindIncident()
   }
   std::partial_sum(
     this->IncidentStart.begin(), this->IncidentStart.end(), this->IncidentStart.begin());
-  this->Incident.resize(3 * this->Geometry.size());
+  vtkApertureMemory::Assign(this->Incident, 3 * this->Geometry.size());
   std::vector<vtkIdType> fill(this->IncidentStart.begin(), this->IncidentStart.end() - 1);
   for (size_t g = 0; g < this->Geometry.size(); ++g)
   {
@@ -783,7 +861,8 @@ void Build::SidesFromNormals(vtkDataArray* normals, double cosAngle)
 {
   std::vector<PointBlock> points(1); // one block, the only one: its ids are the surface's
   PointBlock& block = points.front();
-  std::vector<vtkIdType> cluster(this->N, -1);
+  std::vector<vtkIdType> cluster;
+  vtkApertureMemory::Assign(cluster, this->N, vtkIdType(-1));
   for (vtkIdType v = 0; v + 1 < static_cast<vtkIdType>(this->IncidentStart.size()); ++v)
   {
     // The distinct input points at v, each with its unit normal (zero if it has none).
@@ -866,8 +945,8 @@ void Build::MapInputPoints()
   {
     this->StripTriangles();
   }
-  this->S.Triangles.reserve(3 * this->Geometry.size());
-  this->S.CornerPoints.reserve(3 * this->Geometry.size());
+  vtkApertureMemory::Reserve(this->S.Triangles, 3 * this->Geometry.size());
+  vtkApertureMemory::Reserve(this->S.CornerPoints, 3 * this->Geometry.size());
   for (const vtkIdType t : this->Geometry)
   {
     for (int k = 0; k < 3; ++k)
@@ -885,7 +964,7 @@ void Build::MapInputPoints()
 void Build::PointOfEachInput()
 {
   std::vector<vtkIdType>& map = this->S.InputPoints;
-  map.assign(this->N, vtkApertureSurface::NotOnSurface);
+  vtkApertureMemory::Assign(map, this->N, vtkApertureSurface::NotOnSurface);
   for (size_t c = 0; c < this->TriPoint.size(); ++c)
   {
     // The first of its sides, in their order.
@@ -1025,8 +1104,8 @@ bool vtkApertureMeshSurface::Set(vtkApertureSurface& surface, vtkPolyData* input
   build.SelectGeometry();
   build.FindIncident();
   build.Orient();
-  build.TriPoint.assign(build.TriInput.size(), vtkApertureSurface::NoVertex);
-  build.VertexFirstPoint.assign(build.VertexInput.size(), -1);
+  vtkApertureMemory::Assign(build.TriPoint, build.TriInput.size(), vtkApertureSurface::NoVertex);
+  vtkApertureMemory::Assign(build.VertexFirstPoint, build.VertexInput.size(), vtkIdType(-1));
   surface.Reserve(static_cast<vtkIdType>(build.VertexInput.size())); // most vertices: 1 point
   const double cosAngle = std::cos(vtkMath::RadiansFromDegrees(featureAngle));
   vtkDataArray* given = vtkApertureSurface::GivenNormals(input);

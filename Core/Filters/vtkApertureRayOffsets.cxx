@@ -10,6 +10,7 @@
 =========================================================================*/
 #include "vtkApertureRayOffsets.h"
 
+#include "vtkApertureMemory.h"
 #include "vtkApertureSurface.h"
 
 #include <algorithm>
@@ -23,8 +24,10 @@ namespace
 std::vector<float> EdgeLengths(const vtkApertureSurface& surface)
 {
   const vtkIdType vertices = surface.GetNumberOfVertices();
-  std::vector<float> sum(vertices, 0.0f);
-  std::vector<std::uint32_t> count(vertices, 0);
+  std::vector<float> sum;
+  std::vector<std::uint32_t> count;
+  vtkApertureMemory::Assign(sum, vertices);
+  vtkApertureMemory::Assign(count, vertices);
   for (size_t t = 0; t < surface.Triangles.size(); t += 3)
   {
     for (int k = 0; k < 3; ++k)
@@ -55,8 +58,10 @@ void vtkApertureRayOffsets::Set(vtkApertureSurface& surface, double rayOffset)
   const std::vector<float> edges = EdgeLengths(surface);
   const vtkIdType n = surface.GetNumberOfPoints();
   // The mean of each point's triangles' centroids, relative to the point.
-  std::vector<double> middle(3 * n, 0.0);
-  std::vector<std::uint32_t> count(n, 0);
+  std::vector<double> middle;
+  std::vector<std::uint32_t> count;
+  vtkApertureMemory::Assign(middle, 3 * n);
+  vtkApertureMemory::Assign(count, n);
   for (size_t t = 0; t < surface.Triangles.size(); t += 3)
   {
     double centroid[3] = { 0.0, 0.0, 0.0 };
@@ -78,9 +83,9 @@ void vtkApertureRayOffsets::Set(vtkApertureSurface& surface, double rayOffset)
       ++count[point];
     }
   }
-  surface.Offset.resize(n);
-  surface.Start.resize(3 * n);
-  surface.Near.resize(n);
+  vtkApertureMemory::Assign(surface.Offset, n);
+  vtkApertureMemory::Assign(surface.Start, 3 * n);
+  vtkApertureMemory::Assign(surface.Near, n);
   for (vtkIdType i = 0; i < n; ++i)
   {
     const float* p = surface.GetPosition(i);

@@ -10,6 +10,7 @@
 =========================================================================*/
 #include "vtkApertureSurface.h"
 
+#include "vtkApertureMemory.h"
 #include "vtkApertureRaySampler.h"
 
 #include "vtkApertureSMP.h"
@@ -151,7 +152,7 @@ void vtkApertureSurface::ExpandBounds(vtkPolyData* input, double bounds[6])
 void vtkApertureSurface::WorldPoints(vtkPoints* points, std::vector<double>& world)
 {
   vtkDataArray* data = points ? points->GetData() : nullptr;
-  world.resize(data ? 3 * data->GetNumberOfTuples() : 0);
+  vtkApertureMemory::Assign(world, data ? 3 * data->GetNumberOfTuples() : 0);
   auto copy = [&world](auto* array)
   {
     const auto tuples = vtk::DataArrayTupleRange<3>(array);
@@ -182,10 +183,11 @@ const float* vtkApertureSurface::GetNormal(vtkIdType point) const
 //------------------------------------------------------------------------------
 void vtkApertureSurface::Reserve(vtkIdType points)
 {
-  this->PointVertex.reserve(points);
-  this->Valid.reserve(points);
-  this->Key.reserve(points);
+  vtkApertureMemory::Reserve(this->PointVertex, points);
+  vtkApertureMemory::Reserve(this->Valid, points);
+  vtkApertureMemory::Reserve(this->Key, points);
   this->Normals->Allocate(3 * points);
+  vtkApertureMemory::AdviseHugePages(this->Normals->GetVoidPointer(0), 3 * points * sizeof(float));
 }
 
 //------------------------------------------------------------------------------
@@ -201,7 +203,7 @@ void vtkApertureSurface::Reset(vtkIdType inputPoints)
   this->Offset.clear();
   this->Key.clear();
   this->CornerPoints.clear();
-  this->InputPoints.assign(inputPoints, NotOnSurface);
+  vtkApertureMemory::Assign(this->InputPoints, inputPoints, NotOnSurface);
   this->PolySplits.clear();
   this->StripSplits.clear();
   this->StripTriangles.clear();

@@ -598,6 +598,31 @@ void TestCreases(vtkPolyData* bunny)
       WorstFaceNormal(fromStrips.Output) < 0.01,
     "strips across a crease become triangles with their strip's data and their faces' normals");
 
+  // Polygons and strips in one input (the box, and its strips moved aside): strip corners are
+  // numbered after all polygon corners, so the strips still break at the creases.
+  vtkNew<vtkPolyData> aside;
+  aside->DeepCopy(stripped);
+  for (vtkIdType i = 0; i < aside->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    aside->GetPoint(i, p);
+    p[0] += 3.0;
+    aside->GetPoints()->SetPoint(i, p);
+  }
+  vtkNew<vtkAppendPolyData> both;
+  both->AddInputData(box);
+  both->AddInputData(aside);
+  both->Update();
+  const Result mixed = Run(PRECOMPUTE, both->GetOutput(), 64);
+  const vtkIdType boxCells = box->GetNumberOfPolys();
+  std::cout << "box as " << boxCells << " polygons and " << aside->GetNumberOfStrips()
+            << " strips: " << mixed.Output->GetNumberOfPolys() << " polygons, "
+            << mixed.Output->GetNumberOfStrips() << " strips out\n";
+  Check(mixed.Output->GetNumberOfStrips() == 0 &&
+      mixed.Output->GetNumberOfPolys() == boxCells + 12 &&
+      mixed.Output->GetNumberOfPoints() == 48 && WorstFaceNormal(mixed.Output) < 0.01,
+    "polygons and strips in one input: every corner on its face's side");
+
   // A tessellated cylinder with caps: the rim splits, the 32 facets stay smooth.
   vtkNew<vtkCylinderSource> cylinder;
   cylinder->SetResolution(32);
