@@ -10,6 +10,7 @@
 =========================================================================*/
 #include "vtkApertureRayRisks.h"
 
+#include "vtkApertureMemory.h"
 #include "vtkApertureRayOffsets.h"
 #include "vtkApertureSMP.h"
 #include "vtkApertureSurface.h"
@@ -156,23 +157,10 @@ vtkApertureRayRisks::vtkApertureRayRisks(const std::vector<const vtkApertureSurf
   {
     points += s->GetNumberOfPoints();
   }
-  this->Starts.reserve(points);
+  vtkApertureMemory::Reserve(this->Starts, points);
   for (const vtkApertureSurface* s : receivers)
   {
-    for (vtkIdType i = 0; i < s->GetNumberOfPoints(); ++i)
-    {
-      if (!s->Valid[i])
-      {
-        continue;
-      }
-      Start start;
-      std::copy_n(&s->Start[3 * i], 3, start.Position);
-      start.Radius = s->Near[i];
-      start.Surface = s;
-      start.Vertex = s->PointVertex[i];
-      this->Starts.push_back(start);
-      this->LargestRadius = std::max(this->LargestRadius, start.Radius);
-    }
+    this->CollectStarts(*s);
     edges += EdgeLengths(*s);
     count += 3 * s->GetNumberOfTriangles();
   }
@@ -195,11 +183,60 @@ vtkApertureRayRisks::vtkApertureRayRisks(const std::vector<const vtkApertureSurf
 }
 
 //------------------------------------------------------------------------------
+// Appends the starts of the valid points of `surface`, in their order: blocks of points on every
+// core, each writing where the counts of the blocks before it put it.
+void vtkApertureRayRisks::CollectStarts(const vtkApertureSurface& surface)
+{
+  const vtkIdType n = surface.GetNumberOfPoints(), block = 4096;
+  const vtkIdType blocks = (n + block - 1) / block;
+  std::vector<vtkIdType> first(blocks + 1, 0);
+  vtkApertureSMP::For(0, blocks, 1,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType b = begin; b < end; ++b)
+      {
+        const auto valid = surface.Valid.begin() + b * block;
+        first[b + 1] = std::count_if(
+          valid, valid + std::min(block, n - b * block), [](unsigned char v) { return v != 0; });
+      }
+    });
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  const size_t base = this->Starts.size();
+  this->Starts.resize(base + first.back());
+  std::vector<float> largest(blocks, 0.0f);
+  vtkApertureSMP::For(0, blocks, 1,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType b = begin; b < end; ++b)
+      {
+        Start* start = &this->Starts[base + first[b]];
+        for (vtkIdType i = b * block; i < std::min((b + 1) * block, n); ++i)
+        {
+          if (surface.Valid[i])
+          {
+            std::copy_n(&surface.Start[3 * i], 3, start->Position);
+            start->Radius = surface.Near[i];
+            start->Surface = &surface;
+            start->Vertex = surface.PointVertex[i];
+            largest[b] = std::max(largest[b], start->Radius);
+            ++start;
+          }
+        }
+      }
+    });
+  for (const float radius : largest)
+  {
+    this->LargestRadius = std::max(this->LargestRadius, radius);
+  }
+}
+
+//------------------------------------------------------------------------------
 // The starts in the order of their cells' keys (a cell's starts side by side in memory), and
 // the table of the cells with their runs of starts, at least twice as many slots as cells.
 void vtkApertureRayRisks::SortStarts()
 {
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(this->Starts.size());
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed;
+  vtkApertureMemory::Assign(keyed, this->Starts.size());
   vtkApertureSMP::For(0, static_cast<vtkIdType>(keyed.size()), 4096,
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -211,11 +248,19 @@ void vtkApertureRayRisks::SortStarts()
       }
     });
   vtkApertureSMP::Sort(keyed.begin(), keyed.end(), std::less<>());
-  std::vector<Start> sorted(this->Starts.size());
+  std::vector<Start> sorted;
+  vtkApertureMemory::Assign(sorted, this->Starts.size());
+  vtkApertureSMP::For(0, static_cast<vtkIdType>(keyed.size()), 4096,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        sorted[i] = this->Starts[keyed[i].second];
+      }
+    });
   std::vector<Cell> runs;
   for (std::uint32_t i = 0; i < keyed.size(); ++i)
   {
-    sorted[i] = this->Starts[keyed[i].second];
     if (runs.empty() || runs.back().Key != keyed[i].first)
     {
       runs.push_back({ keyed[i].first, i, i });
@@ -228,7 +273,7 @@ void vtkApertureRayRisks::SortStarts()
   {
     ++this->CellBits;
   }
-  this->Cells.assign(size_t(1) << this->CellBits, Cell{ FreeCell, 0, 0 });
+  vtkApertureMemory::Assign(this->Cells, size_t(1) << this->CellBits, Cell{ FreeCell, 0, 0 });
   const size_t mask = this->Cells.size() - 1;
   for (const Cell& run : runs)
   {
@@ -283,7 +328,8 @@ std::vector<unsigned char> vtkApertureRayRisks::Find(
   const vtkApertureSurface& surface, bool receiver, const std::vector<unsigned char>& only) const
 {
   const vtkIdType triangles = surface.GetNumberOfTriangles();
-  std::vector<unsigned char> risky(triangles, 0);
+  std::vector<unsigned char> risky;
+  vtkApertureMemory::Assign(risky, triangles);
   if (receiver)
   {
     this->MarkIncident(surface, only, risky);
@@ -306,13 +352,17 @@ void vtkApertureRayRisks::MarkIncident(const vtkApertureSurface& surface,
 {
   // The receiving points of each vertex.
   const vtkIdType vertices = surface.GetNumberOfVertices();
-  std::vector<vtkIdType> first(vertices + 1, 0);
+  std::vector<vtkIdType> first;
+  vtkApertureMemory::Assign(first, vertices + 1);
   for (const std::uint32_t v : surface.PointVertex)
   {
     ++first[v + 1];
   }
   std::partial_sum(first.begin(), first.end(), first.begin());
-  std::vector<vtkIdType> points(surface.PointVertex.size()), fill(first.begin(), first.end() - 1);
+  std::vector<vtkIdType> points, fill;
+  vtkApertureMemory::Assign(points, surface.PointVertex.size());
+  vtkApertureMemory::Reserve(fill, vertices);
+  fill.assign(first.begin(), first.end() - 1);
   for (size_t i = 0; i < points.size(); ++i)
   {
     points[fill[surface.PointVertex[i]]++] = static_cast<vtkIdType>(i);

@@ -77,6 +77,7 @@ private:
     std::uint32_t Begin, End;
   };
   static constexpr std::uint64_t FreeCell = ~std::uint64_t(0);
+  void CollectStarts(const vtkApertureSurface& surface);
   void SortStarts();
   const Cell* FindCell(std::uint64_t key) const;
   std::size_t Slot(std::uint64_t key) const;
