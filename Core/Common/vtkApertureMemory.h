@@ -68,12 +68,13 @@ void Reserve(std::vector<T>& v, size_t n)
 template <typename T, typename Value = T>
 void Assign(std::vector<T>& v, size_t n, const Value& value = Value())
 {
+  const T copy = static_cast<T>(value); // `value` may be an element of v
   if (n > v.capacity())
   {
     std::vector<T>().swap(v);
   }
   Reserve(v, n);
-  v.assign(n, static_cast<T>(value));
+  v.assign(n, copy);
 }
 }
 

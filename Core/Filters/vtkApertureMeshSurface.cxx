@@ -349,9 +349,13 @@ void Build::DropNotFinite()
     {
       continue;
     }
-    std::copy_n(&this->TriInput[3 * t], 3, &this->TriInput[3 * kept]);
-    std::copy_n(&this->TriCorner[3 * t], 3, &this->TriCorner[3 * kept]);
-    this->TriCell[kept++] = this->TriCell[t];
+    if (kept != t)
+    {
+      std::copy_n(&this->TriInput[3 * t], 3, &this->TriInput[3 * kept]);
+      std::copy_n(&this->TriCorner[3 * t], 3, &this->TriCorner[3 * kept]);
+      this->TriCell[kept] = this->TriCell[t];
+    }
+    ++kept;
   }
   this->TriInput.resize(3 * kept);
   this->TriCorner.resize(3 * kept);
@@ -383,9 +387,19 @@ void vtkApertureMeshSurface::Triangulate(vtkIdType npts, const vtkIdType* ids, b
   }
   if (npts > 3 && allFinite && points)
   {
+    // Not vtkCell::Initialize(): it reads through vtkPoints::GetPoint(id), whose one tuple
+    // buffer per array threads would share.
     vtkNew<vtkPolygon> polygon;
+    polygon->GetPointIds()->SetNumberOfIds(npts);
+    polygon->GetPoints()->SetNumberOfPoints(npts);
+    for (vtkIdType k = 0; k < npts; ++k)
+    {
+      double x[3];
+      points->GetPoint(ids[k], x);
+      polygon->GetPoints()->SetPoint(k, x);
+      polygon->GetPointIds()->SetId(k, ids[k]);
+    }
     vtkNew<vtkIdList> local;
-    polygon->Initialize(static_cast<int>(npts), ids, points);
     if (polygon->Triangulate(local) && local->GetNumberOfIds() == 3 * (npts - 2))
     {
       for (vtkIdType t = 0; t < local->GetNumberOfIds(); t += 3)

@@ -73,7 +73,8 @@ public:
    * How a polygon or strip becomes triangles, for every caster and for refinement: appends to
    * `triangles` three local corner indices (0 .. npts - 1) per triangle. Strips alternate their
    * winding; polygons of more than 3 points are ear-cut, or fanned where that fails or a point
-   * is not finite (`finite` per point id; nullptr: all are). Without `points`, fans.
+   * is not finite (`finite` per point id; nullptr: all are). Without `points`, fans. Safe to
+   * call from several threads on the same points.
    */
   static void Triangulate(vtkIdType npts, const vtkIdType* ids, bool strip, vtkPoints* points,
     const unsigned char* finite, std::vector<vtkIdType>& triangles);
