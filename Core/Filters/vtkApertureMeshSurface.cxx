@@ -387,8 +387,8 @@ void vtkApertureMeshSurface::Triangulate(vtkIdType npts, const vtkIdType* ids, b
   }
   if (npts > 3 && allFinite && points)
   {
-    // Not vtkCell::Initialize(): it reads through vtkPoints::GetPoint(id), whose one tuple
-    // buffer per array threads would share.
+    // Not vtkCell::Initialize(): it reads through vtkPoints::GetPoint(id), which returns the
+    // array's one tuple buffer, shared by every thread.
     vtkNew<vtkPolygon> polygon;
     polygon->GetPointIds()->SetNumberOfIds(npts);
     polygon->GetPoints()->SetNumberOfPoints(npts);
